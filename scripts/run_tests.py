@@ -1,0 +1,124 @@
+#!/usr/bin/env python3
+"""Runs every test of the workspace and prints one summary line per suite, then a total.
+
+gtest binaries built by catkin_add_gtest, pytest on the pure-Python unit tests (tests/ and
+src/*/test/unit), and every rostest launch file src/*/test/*.test (each starts its own roscore).
+Results are read back from the runners' JUnit XML files, so a crash that writes no result
+counts as a failure. Exit status is 0 only if everything passed and at least one test ran.
+
+Usage: run_tests.py [--only SUBSTRING]   (run the suites whose name contains SUBSTRING)
+"""
+import argparse
+import glob
+import os
+import subprocess
+import sys
+import time
+import xml.etree.ElementTree as ET
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+RESULTS = os.path.join(ROOT, "test_results")
+
+
+def junit_counts(path):
+    """(passed, failed, skipped) from a JUnit XML file; a missing or unreadable file is one failure."""
+    try:
+        root = ET.parse(path).getroot()
+    except (OSError, ET.ParseError):
+        return 0, 1, 0
+    passed = failed = skipped = 0
+    for case in root.iter("testcase"):
+        if case.find("failure") is not None or case.find("error") is not None:
+            failed += 1
+        elif case.find("skipped") is not None:
+            skipped += 1
+        else:
+            passed += 1
+    if passed + failed + skipped == 0:
+        failed = 1  # a suite that ran nothing is a broken suite
+    return passed, failed, skipped
+
+
+def counts_of(xml_path):
+    """A rostest's own file counts its test nodes; the rosunit-*.xml files beside it count
+    the cases inside them, which is what we report when they exist."""
+    if os.path.basename(xml_path).startswith("rostest-"):
+        details = glob.glob(os.path.join(os.path.dirname(xml_path), "rosunit-*.xml"))
+        if details:
+            node_counts = junit_counts(xml_path)
+            totals = [sum(c) for c in zip(*(junit_counts(d) for d in details))]
+            totals[1] = max(totals[1], node_counts[1])  # a node that died without its cases
+            return tuple(totals)
+    return junit_counts(xml_path)
+
+
+def run(name, cmd, xml_path, env=None, timeout=900):
+    start = time.time()
+    log_path = os.path.join(RESULTS, "logs", name.replace("/", "_") + ".log")
+    os.makedirs(os.path.dirname(log_path), exist_ok=True)
+    with open(log_path, "w") as log:
+        try:
+            code = subprocess.call(cmd, stdout=log, stderr=subprocess.STDOUT, env=env, timeout=timeout, cwd=ROOT)
+        except subprocess.TimeoutExpired:
+            code = "timeout"
+    passed, failed, skipped = counts_of(xml_path)
+    if code not in (0, "timeout") and failed == 0:
+        failed = 1  # the runner failed without saying which test
+    if code == "timeout":
+        failed += 1
+    status = "ok" if failed == 0 else "FAILED (log: %s)" % os.path.relpath(log_path, ROOT)
+    print("%-55s %3d passed, %d failed, %d skipped  %5.1fs  %s"
+          % (name, passed, failed, skipped, time.time() - start, status), flush=True)
+    if failed:
+        with open(log_path) as log:
+            tail = log.readlines()[-40:]
+        sys.stdout.write("".join("    | " + line for line in tail))
+    return passed, failed, skipped
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--only", default="", help="run only suites whose name contains this")
+    args = parser.parse_args()
+    os.makedirs(RESULTS, exist_ok=True)
+    suites = []
+
+    for binary in sorted(glob.glob(os.path.join(ROOT, "devel", "lib", "*", "test_*"))):
+        if os.access(binary, os.X_OK) and not binary.endswith(".py"):
+            name = "gtest " + os.path.relpath(binary, os.path.join(ROOT, "devel", "lib"))
+            xml = os.path.join(RESULTS, "gtest", os.path.basename(binary) + ".xml")
+            suites.append((name, [binary, "--gtest_output=xml:" + xml], xml))
+
+    unit_dirs = [d for d in [os.path.join(ROOT, "tests")] + sorted(glob.glob(os.path.join(ROOT, "src", "*", "test", "unit")))
+                 if glob.glob(os.path.join(d, "test_*.py"))]
+    if unit_dirs:
+        xml = os.path.join(RESULTS, "pytest.xml")
+        suites.append(("pytest " + " ".join(os.path.relpath(d, ROOT) for d in unit_dirs),
+                       [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "--junitxml=" + xml] + unit_dirs,
+                       xml))
+
+    rostest_env = dict(os.environ, ROS_TEST_RESULTS_DIR=os.path.join(RESULTS, "rostest"))
+    for launch in sorted(glob.glob(os.path.join(ROOT, "src", "*", "test", "*.test"))):
+        package = launch.split(os.sep)[-3]
+        test = os.path.splitext(os.path.basename(launch))[0]
+        base = os.path.join(RESULTS, "rostest", package + "." + test)
+        xml = os.path.join(base, package, "rostest-test_%s.xml" % test)
+        suites.append(("rostest %s %s.test" % (package, test),
+                       ["rostest", "--results-base-dir", base, package, test + ".test"], xml))
+
+    totals = [0, 0, 0]
+    for name, cmd, xml in suites:
+        if args.only and args.only not in name:
+            continue
+        for stale in glob.glob(os.path.join(os.path.dirname(xml), "*.xml")):
+            os.remove(stale)
+        env = rostest_env if name.startswith("rostest") else None
+        for i, n in enumerate(run(name, cmd, xml, env=env)):
+            totals[i] += n
+    print()
+    print("%d passed, %d failed, %d skipped" % tuple(totals))
+    return 0 if totals[1] == 0 and totals[0] > 0 else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,28 @@
+#include "bullet_sim/model_plugins.h"
+
+#include <ros/console.h>
+
+#include "bullet_sim/description_error.h"
+#include "bullet_sim/laser_publisher.h"
+
+namespace bullet_sim {
+
+std::vector<std::unique_ptr<ModelPlugin>> makeModelPlugins(PhysicsWorld& world, PhysicsModel& model,
+                                                           const std::string& robot_namespace) {
+  std::vector<std::unique_ptr<ModelPlugin>> plugins;
+  const ModelDescription& description = model.description();
+  for (const LaserConfig& laser : parseLaserSensors(description.extensions, description.source)) {
+    if (!model.hasLink(laser.link))
+      throw DescriptionError(description.source + ": <gazebo reference='" + laser.link + "'>/<sensor name='" +
+                             laser.name + "'>: expected the name of a link of model '" + model.name() + "'");
+    if (laser.plugin_filename.empty()) {
+      ROS_WARN_STREAM("model '" << model.name() << "': ray sensor '" << laser.name
+                                << "' has no libgazebo_ros_laser.so plugin, so nothing is published for it");
+      continue;
+    }
+    plugins.push_back(std::make_unique<LaserPublisher>(laser, world, model, robot_namespace));
+  }
+  return plugins;
+}
+
+}  // namespace bullet_sim

@@ -1,0 +1,142 @@
+#include "bullet_sim/simulator.h"
+
+#include <ros/callback_queue.h>
+#include <rosgraph_msgs/Clock.h>
+
+#include "bullet_sim/description_error.h"
+#include "bullet_sim/gazebo_ros_api.h"
+#include "bullet_sim/model_plugins.h"
+
+namespace bullet_sim {
+namespace {
+// Wall-clock floor between /clock messages: when running much faster than real time, a
+// message per step would only load every sim-time subscriber.
+const ros::WallDuration kMinClockWallPeriod(0.0005);
+// While paused, /clock repeats the frozen time so that late starters learn it.
+const ros::WallDuration kPausedClockPeriod(0.1);
+}  // namespace
+
+Simulator::Simulator(const WorldDescription& world, const ResourceResolver& resolver, const SimulatorOptions& options)
+    : world_name_(world.name),
+      resolver_(resolver),
+      physics_(world.physics),
+      paused_(options.paused),
+      options_(options),
+      node_("/") {
+  clock_publisher_ = node_.advertise<rosgraph_msgs::Clock>("/clock", 10);
+  for (const PlacedModel& placed : world.models) spawn(placed.model, placed.pose, "");
+  api_ = std::make_unique<GazeboRosApi>(*this);
+  publishClock(true);
+}
+
+Simulator::~Simulator() = default;
+
+void Simulator::spawn(const ModelDescription& model, const Eigen::Isometry3d& pose, const std::string& robot_namespace) {
+  PhysicsModel& added = physics_.addModel(model, pose);
+  for (const std::string& w : physics_.warnings()) ROS_WARN_STREAM(w);
+  try {
+    plugins_[model.name] = makeModelPlugins(physics_, added, robot_namespace);
+  } catch (...) {
+    plugins_.erase(model.name);
+    physics_.removeModel(model.name);
+    throw;
+  }
+}
+
+bool Simulator::remove(const std::string& name) {
+  plugins_.erase(name);  // plugins refer to the model: they go first
+  return physics_.removeModel(name);
+}
+
+void Simulator::setPaused(bool paused) {
+  paused_ = paused;
+  pace_wall_start_ = ros::WallTime();  // restart real-time tracking on resume
+}
+
+void Simulator::resetWorld() {
+  physics_.resetModels();
+  for (auto& [name, plugins] : plugins_)
+    for (auto& p : plugins) p->reset();
+  pace_wall_start_ = ros::WallTime();
+}
+
+void Simulator::resetSimulation() {
+  physics_.setTime(0.0);
+  resetWorld();
+  last_clock_ = ros::Time();
+  publishClock(true);
+}
+
+void Simulator::stepOnce() {
+  const ros::Time before = now();
+  if (before_step) before_step(before);
+  const double dt = physics_.settings().max_step_size;
+  for (auto& [name, plugins] : plugins_)
+    for (auto& p : plugins) p->beforeStep(before, dt);
+  physics_.step();
+  const ros::Time after = now();
+  for (auto& [name, plugins] : plugins_)
+    for (auto& p : plugins) p->afterStep(after);
+  api_->afterStep(after);
+  publishClock(false);
+}
+
+void Simulator::runSteps(int n) {
+  for (int i = 0; i < n; ++i) stepOnce();
+}
+
+void Simulator::publishClock(bool force) {
+  const ros::Time t = now();
+  const ros::WallTime wall = ros::WallTime::now();
+  if (!force) {
+    if (options_.pub_clock_frequency > 0 && (t - last_clock_).toSec() < 1.0 / options_.pub_clock_frequency) return;
+    if (wall - last_clock_wall_ < kMinClockWallPeriod) return;
+  }
+  rosgraph_msgs::Clock msg;
+  msg.clock = t;
+  clock_publisher_.publish(msg);
+  last_clock_ = t;
+  last_clock_wall_ = wall;
+}
+
+void Simulator::run() {
+  ros::CallbackQueue& queue = *ros::getGlobalCallbackQueue();
+  while (ros::ok()) {
+    if (paused_) {
+      queue.callAvailable(ros::WallDuration(0.01));
+      if (ros::WallTime::now() - last_clock_wall_ > kPausedClockPeriod) {
+        publishClock(true);
+        api_->publishStates(true);
+      }
+      continue;
+    }
+    queue.callAvailable();
+    if (paused_) continue;
+    stepOnce();
+
+    // Target speed: real_time_factor, capped by real_time_update_rate * step as in Gazebo;
+    // either at 0 means as fast as possible.
+    const PhysicsSettings& s = physics_.settings();
+    const double target = (s.real_time_factor > 0 && s.real_time_update_rate > 0)
+                              ? std::min(s.real_time_factor, s.real_time_update_rate * s.max_step_size)
+                              : 0.0;
+    if (target <= 0) continue;
+    const ros::WallTime wall = ros::WallTime::now();
+    if (pace_wall_start_.isZero()) {
+      pace_wall_start_ = wall;
+      pace_sim_start_ = physics_.time();
+      continue;
+    }
+    const double ahead = (physics_.time() - pace_sim_start_) / target - (wall - pace_wall_start_).toSec();
+    if (ahead > 0) {
+      queue.callAvailable(ros::WallDuration(ahead));  // sleeps, but answers requests meanwhile
+      const double still_ahead =
+          (physics_.time() - pace_sim_start_) / target - (ros::WallTime::now() - pace_wall_start_).toSec();
+      if (still_ahead > 0) ros::WallDuration(still_ahead).sleep();
+    } else if (ahead < -0.5) {
+      pace_wall_start_ = ros::WallTime();  // far behind: do not try to catch up in a burst
+    }
+  }
+}
+
+}  // namespace bullet_sim

@@ -1,0 +1,218 @@
+#!/usr/bin/env python3
+"""The /gazebo API of bullet_sim_node, as a tutorial user calls it: spawn, state, pause,
+delete, forces, and clear errors for bad input while the node keeps running.
+The simulator starts paused (see gazebo_api.test), so nothing moves unless a test runs it."""
+import math
+import subprocess
+import time
+import unittest
+
+import rospy
+import rostest
+from gazebo_msgs.msg import ModelStates
+from geometry_msgs.msg import Point, Wrench
+from rosgraph_msgs.msg import Clock
+
+from sim_test_utils import G, Gazebo, package_path, pose, read, test_path
+
+BOX = read('urdf', 'falling_box.urdf')
+PENDULUM = read('package', 'urdf', 'pendulum.urdf')
+
+
+def rosrun(*args, timeout=60):
+    return subprocess.run(['rosrun', 'bullet_sim'] + list(args), capture_output=True, text=True, timeout=timeout)
+
+
+class GazeboApiTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node('test_gazebo_api')
+        cls.gz = Gazebo()
+
+    def setUp(self):
+        self.gz.pause_physics()
+        for name in self.gz.get_world_properties().model_names:
+            if name != 'ground_plane':
+                self.gz.delete_model(model_name=name)
+
+    def assertRejected(self, response, *fragments):
+        self.assertFalse(response.success, response.status_message)
+        for fragment in fragments:
+            self.assertIn(fragment, response.status_message)
+        self.assertTrue(self.gz.alive(), 'the simulator stopped answering after a bad request')
+
+    # --- spawning, state, deleting -------------------------------------------------------------
+
+    def test_world_properties_list_the_ground_plane(self):
+        props = self.gz.get_world_properties()
+        self.assertTrue(props.success)
+        self.assertIn('ground_plane', props.model_names)
+
+    def test_set_then_get_model_state_round_trips(self):
+        self.assertTrue(self.gz.spawn_urdf('box', BOX, pose(0, 0, 1)).success)
+        target = pose(1.5, -2.0, 3.25, yaw=0.7)
+        self.assertTrue(self.gz.set_state('box', target).success)
+        got = self.gz.state('box')
+        self.assertTrue(got.success, got.status_message)
+        for field in ('x', 'y', 'z'):
+            self.assertAlmostEqual(getattr(got.pose.position, field), getattr(target.position, field), places=9)
+        for field in ('x', 'y', 'z', 'w'):
+            self.assertAlmostEqual(getattr(got.pose.orientation, field), getattr(target.orientation, field), places=9)
+        # Relative to another model, and set relative to it: the same place.
+        self.assertTrue(self.gz.spawn_urdf('marker', BOX, pose(1, 0, 1)).success)
+        relative = self.gz.state('box', relative='marker')
+        self.assertAlmostEqual(relative.pose.position.x, 0.5, places=9)
+        self.assertTrue(self.gz.set_state('box', pose(0, 1, 0), reference='marker').success)
+        self.assertAlmostEqual(self.gz.state('box').pose.position.y, 1.0, places=9)
+
+    def test_pause_stops_clock_and_motion_and_unpause_resumes(self):
+        self.assertTrue(self.gz.spawn_urdf('box', BOX, pose(0, 0, 50)).success)
+        clock_before = rospy.wait_for_message('/clock', Clock, timeout=5).clock
+        z_before = self.gz.state('box').pose.position.z
+        time.sleep(0.5)
+        self.assertAlmostEqual(self.gz.sim_time(), clock_before.to_sec(), places=6)
+        self.assertEqual(self.gz.state('box').pose.position.z, z_before)
+        self.gz.unpause_physics()
+        time.sleep(0.5)
+        clock_running = rospy.wait_for_message('/clock', Clock, timeout=5).clock
+        self.gz.pause_physics()
+        self.assertGreater(clock_running, clock_before)
+        self.assertLess(self.gz.state('box').pose.position.z, z_before - 0.01)
+
+    def test_delete_removes_the_model(self):
+        self.assertTrue(self.gz.spawn_urdf('doomed', BOX, pose(0, 0, 1)).success)
+        deleted = self.gz.delete_model(model_name='doomed')
+        self.assertTrue(deleted.success, deleted.status_message)
+        self.assertNotIn('doomed', self.gz.get_world_properties().model_names)
+        self.assertRejected(self.gz.state('doomed'), 'model [doomed] does not exist')
+        self.assertRejected(self.gz.delete_model(model_name='doomed'), 'model [doomed] does not exist')
+
+    def test_two_robots_spawn_and_move_independently(self):
+        self.assertTrue(self.gz.spawn_urdf('left', PENDULUM, pose(0, -1, 0)).success)
+        self.assertTrue(self.gz.spawn_urdf('right', PENDULUM, pose(0, 1, 0)).success)
+        self.assertTrue(self.gz.set_model_configuration(model_name='left', joint_names=['hinge'],
+                                                        joint_positions=[0.5]).success)
+        self.gz.run_for(0.2)
+        left = self.gz.get_link_state(link_name='left::bob', reference_frame='')
+        right = self.gz.get_link_state(link_name='right::bob', reference_frame='')
+        self.assertTrue(left.success and right.success)
+        self.assertAlmostEqual(left.link_state.pose.position.y, -1.0, places=6)
+        self.assertAlmostEqual(right.link_state.pose.position.y, 1.0, places=6)
+        self.assertNotAlmostEqual(self.gz.get_joint_properties(joint_name='left::hinge').position[0], 0.0, places=2)
+        self.assertAlmostEqual(self.gz.get_joint_properties(joint_name='right::hinge').position[0], 0.0, places=9)
+        states = rospy.wait_for_message('/gazebo/model_states', ModelStates, timeout=5)
+        self.assertIn('left', states.name)
+        self.assertIn('right', states.name)
+
+    def test_spawn_model_script_places_a_robot_from_xacro(self):
+        done = rosrun('spawn_model', '-urdf', '-file', package_path('urdf', 'laser_post.urdf.xacro'),
+                      '-model', 'scripted', '-x', '1', '-y', '2', '-Y', '0.5')
+        self.assertEqual(done.returncode, 0, done.stdout + done.stderr)
+        state = self.gz.state('scripted')
+        self.assertTrue(state.success)
+        self.assertAlmostEqual(state.pose.position.x, 1.0, places=6)
+        self.assertAlmostEqual(state.pose.orientation.z, math.sin(0.25), places=6)
+
+    # --- forces and reset -----------------------------------------------------------------------
+
+    def test_body_wrench_lifts_and_joint_effort_turns(self):
+        self.assertTrue(self.gz.spawn_urdf('box', BOX, pose(0, 0, 2)).success)
+        self.assertTrue(self.gz.spawn_urdf('pendulum', PENDULUM, pose(3, 0, 0)).success)
+        lift = Wrench()
+        lift.force.z = 2 * 2.0 * G  # twice the box's weight: it accelerates up at g
+        applied = self.gz.apply_body_wrench(body_name='box::body', reference_frame='', reference_point=Point(),
+                                            wrench=lift, start_time=rospy.Time(0), duration=rospy.Duration(-1))
+        self.assertTrue(applied.success, applied.status_message)
+        pushed = self.gz.apply_joint_effort(joint_name='hinge', effort=1.0, start_time=rospy.Time(0),
+                                            duration=rospy.Duration(0.5))
+        self.assertTrue(pushed.success, pushed.status_message)
+        self.gz.run_for(0.5)
+        self.assertGreater(self.gz.state('box').pose.position.z, 2.0 + 0.5 * G * 0.5 ** 2 * 0.9)
+        self.assertGreater(self.gz.get_joint_properties(joint_name='hinge').position[0], 0.05)
+
+    def test_reset_world_restores_spawn_poses(self):
+        self.assertTrue(self.gz.spawn_urdf('box', BOX, pose(0, 0, 5)).success)
+        self.gz.run_for(0.3)
+        self.assertLess(self.gz.state('box').pose.position.z, 4.9)
+        time_before = self.gz.sim_time()
+        self.gz.reset_world()
+        self.assertAlmostEqual(self.gz.state('box').pose.position.z, 5.0, places=9)
+        self.assertEqual(self.gz.sim_time(), time_before)
+        self.gz.reset_simulation()
+        self.assertEqual(self.gz.sim_time(), 0.0)
+
+    # --- bad input: a clear error and the node stays up --------------------------------------
+
+    def test_malformed_urdf(self):
+        self.assertRejected(self.gz.spawn_urdf('bad', '<robot name="bad"><link name="a"></robot>'),
+                            'malformed XML at line')
+
+    def test_invalid_urdf_names_the_problem(self):
+        xml = BOX.replace('</robot>', '<joint name="j" type="fixed"><parent link="body"/><child link="nowhere"/>'
+                                      '</joint></robot>')
+        self.assertRejected(self.gz.spawn_urdf('bad', xml), 'invalid URDF', 'nowhere')
+
+    def test_missing_mesh_names_link_and_file(self):
+        xml = BOX.replace('<collision><geometry><box size="0.2 0.2 0.2"/>',
+                          '<collision><geometry><mesh filename="/nonexistent/part.stl"/>')
+        self.assertRejected(self.gz.spawn_urdf('bad', xml), "<link name='body'>", '/nonexistent/part.stl')
+
+    def test_malformed_sdf_names_the_element(self):
+        sdf = ('<sdf version="1.6"><model name="m"><link name="l"><collision name="c"><geometry><cone/>'
+               '</geometry></collision></link></model></sdf>')
+        response = self.gz.spawn_sdf_model(model_name='bad', model_xml=sdf, robot_namespace='', initial_pose=pose(),
+                                           reference_frame='')
+        self.assertRejected(response, '<geometry>', 'expected one of box, cylinder, sphere, plane, mesh')
+
+    def test_empty_model_xml(self):
+        self.assertRejected(self.gz.spawn_urdf('bad', '   '), 'model_xml is empty')
+
+    def test_duplicate_model_name(self):
+        self.assertTrue(self.gz.spawn_urdf('twin', BOX).success)
+        self.assertRejected(self.gz.spawn_urdf('twin', BOX), "a model named 'twin' already exists")
+
+    def test_unknown_model_and_reference(self):
+        self.assertRejected(self.gz.state('ghost'), 'model [ghost] does not exist')
+        self.assertRejected(self.gz.set_state('ghost', pose()), 'model [ghost] does not exist')
+        self.assertTrue(self.gz.spawn_urdf('box', BOX).success)
+        self.assertRejected(self.gz.state('box', relative='nothing::here'), 'relative_entity_name [nothing::here]')
+        self.assertRejected(self.gz.spawn_urdf_model(model_name='other', model_xml=BOX, robot_namespace='',
+                                                     initial_pose=pose(), reference_frame='ghost'),
+                            "reference_frame: entity 'ghost' does not exist")
+
+    def test_nan_in_requests(self):
+        self.assertTrue(self.gz.spawn_urdf('box', BOX, pose(0, 0, 1)).success)
+        self.assertRejected(self.gz.set_state('box', pose(float('nan'), 0, 0)), 'expected finite numbers')
+        self.assertRejected(self.gz.spawn_urdf('nan_box', BOX, pose(0, float('inf'), 0)), 'initial_pose',
+                            'expected finite numbers')
+        wrench = Wrench()
+        wrench.force.x = float('nan')
+        self.assertRejected(self.gz.apply_body_wrench(body_name='box::body', reference_frame='',
+                                                      reference_point=Point(), wrench=wrench,
+                                                      start_time=rospy.Time(0), duration=rospy.Duration(1)),
+                            'expected finite numbers')
+        self.assertRejected(self.gz.apply_joint_effort(joint_name='nothing', effort=float('nan'),
+                                                       start_time=rospy.Time(0), duration=rospy.Duration(1)),
+                            'effort: expected a finite number')
+        self.assertAlmostEqual(self.gz.state('box').pose.position.z, 1.0, places=9)  # nothing was applied
+
+    def test_malformed_xacro_through_spawn_model(self):
+        done = rosrun('spawn_model', '-urdf', '-file', test_path('urdf', 'broken.urdf.xacro'), '-model', 'bad')
+        self.assertNotEqual(done.returncode, 0)
+        self.assertIn('xacro failed', done.stderr + done.stdout)
+        self.assertIn('broken.urdf.xacro', done.stderr + done.stdout)
+        self.assertTrue(self.gz.alive())
+
+    def test_bad_world_file_exits_nonzero_with_the_reason(self):
+        for world, fragment in (('unknown_geometry.world', 'expected one of box, cylinder, sphere, plane, mesh'),
+                                ('unknown_model.world', 'model://'),
+                                ('malformed.world', 'malformed.world')):
+            done = rosrun('bullet_sim_node', test_path('data', 'bad', world), '__name:=bad_world_probe')
+            self.assertEqual(done.returncode, 1, world + ': ' + done.stdout + done.stderr)
+            self.assertIn(world, done.stderr)
+            self.assertIn(fragment, done.stderr)
+        self.assertTrue(self.gz.alive())
+
+
+if __name__ == '__main__':
+    rostest.rosrun('bullet_sim', 'test_gazebo_api', GazeboApiTest)

@@ -1,0 +1,77 @@
+#!/usr/bin/env python3
+"""bullet_sim_node against analytic mechanics, observed through ROS as a user would:
+a pendulum's small-angle period and a body's free-fall drop."""
+import math
+import time
+import unittest
+
+import rospy
+import rostest
+from gazebo_msgs.msg import LinkStates
+
+from sim_test_utils import G, Gazebo, pose, read
+
+PENDULUM = read('package', 'urdf', 'pendulum.urdf')
+BOX = read('urdf', 'falling_box.urdf')
+L, M, I_BOB = 0.25, 1.0, 1e-4  # from pendulum.urdf
+
+
+class PhysicsAccuracyTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node('test_physics_accuracy')
+        cls.gz = Gazebo()
+
+    def test_pendulum_period_matches_small_angle_theory(self):
+        self.gz.pause_physics()
+        self.assertTrue(self.gz.spawn_urdf('pendulum', PENDULUM).success)
+        self.assertTrue(self.gz.set_model_configuration(model_name='pendulum', joint_names=['hinge'],
+                                                        joint_positions=[0.05]).success)
+        # (sim time, swing angle) from link_states, stamped with the /clock time at receipt.
+        # queue_size 1: a subscriber that falls behind drops old states instead of stamping
+        # them late, which would stretch the measured period.
+        samples = []
+
+        def on_states(msg):
+            i = msg.name.index('pendulum::bob')
+            q = msg.pose[i].orientation
+            samples.append((rospy.get_time(), 2 * math.atan2(q.y, q.w)))
+
+        sub = rospy.Subscriber('/gazebo/link_states', LinkStates, on_states, queue_size=1, buff_size=1 << 20,
+                               tcp_nodelay=True)
+        time.sleep(0.5)
+        self.gz.unpause_physics()
+        start = rospy.get_time()
+        while rospy.get_time() < start + 6.0 and not rospy.is_shutdown():
+            time.sleep(0.05)
+        self.gz.pause_physics()
+        sub.unregister()
+
+        crossings = []
+        for (t0, a0), (t1, a1) in zip(samples, samples[1:]):
+            if a0 != 0 and (a0 < 0) != (a1 < 0) and t1 > t0:
+                crossings.append(t0 + (t1 - t0) * a0 / (a0 - a1))
+        self.assertGreaterEqual(len(crossings), 8, 'the pendulum did not swing')
+        period = 2 * (crossings[-1] - crossings[0]) / (len(crossings) - 1)
+        expected = 2 * math.pi * math.sqrt((I_BOB + M * L * L) / (M * G * L))
+        print('pendulum period %.5f s, small-angle theory %.5f s, error %.3f%%'
+              % (period, expected, 100 * abs(period - expected) / expected))
+        self.assertAlmostEqual(period, expected, delta=0.01 * expected)
+
+    def test_free_fall_drop_after_one_second(self):
+        self.gz.pause_physics()
+        self.assertTrue(self.gz.spawn_urdf('faller', BOX, pose(5, 5, 20)).success)
+        t0 = self.gz.sim_time()
+        self.gz.run_for(1.0)
+        state = self.gz.state('faller')
+        elapsed = state.header.stamp.to_sec() - t0
+        drop = 20.0 - state.pose.position.z
+        expected = 0.5 * G * elapsed ** 2
+        print('free fall: %.6f m in %.3f s, 1/2 g t^2 = %.6f m, error %.3f%%'
+              % (drop, elapsed, expected, 100 * abs(drop - expected) / expected))
+        self.assertGreaterEqual(elapsed, 1.0)
+        self.assertAlmostEqual(drop, expected, delta=0.002 * expected)
+
+
+if __name__ == '__main__':
+    rostest.rosrun('bullet_sim', 'test_physics_accuracy', PhysicsAccuracyTest)
