@@ -3,9 +3,18 @@
 #include <algorithm>
 #include <cmath>
 
+#include <BulletCollision/CollisionDispatch/btManifoldResult.h>
+
 #include "bullet_sim/description_error.h"
 
 namespace bullet_sim {
+namespace {
+// Gazebo's ODE takes the smaller of two surfaces' friction coefficients; Bullet would
+// multiply them, which makes Gazebo's ground_plane (mu 100) absurdly grippy.
+btScalar minimumFriction(const btCollisionObject* a, const btCollisionObject* b) {
+  return std::min(a->getFriction(), b->getFriction());
+}
+}  // namespace
 
 PhysicsWorld::PhysicsWorld(const PhysicsSettings& settings)
     : collision_config_(std::make_unique<btDefaultCollisionConfiguration>()),
@@ -14,6 +23,7 @@ PhysicsWorld::PhysicsWorld(const PhysicsSettings& settings)
       solver_(std::make_unique<btMultiBodyConstraintSolver>()),
       world_(std::make_unique<btMultiBodyDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                                          collision_config_.get())) {
+  gCalculateCombinedFrictionCallback = &minimumFriction;
   setSettings(settings);
 }
 

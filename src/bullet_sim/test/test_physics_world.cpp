@@ -229,3 +229,69 @@ TEST(PhysicsWorld, RemoveAndResetModels) {
   EXPECT_FALSE(world.removeModel("box"));
   EXPECT_EQ(world.findModel("box"), nullptr);
 }
+
+namespace {
+
+ModelDescription groundPlane() {
+  ModelDescription ground;
+  ground.name = "ground_plane";
+  ground.is_static = true;
+  ground.links.emplace_back();
+  ground.links[0].name = "link";
+  ground.links[0].collisions.emplace_back();
+  ground.links[0].collisions[0].geometry.type = GeometryType::Plane;
+  return ground;
+}
+
+std::string meshBoxUrdf(const std::string& name, double scale) {
+  const std::string s = std::to_string(scale);
+  return R"(<robot name=")" + name + R"("><link name="body">
+    <inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
+    <collision><geometry><mesh filename=")" BULLET_SIM_TEST_DATA_DIR R"(/meshes/cube.stl" scale=")" + s + " " + s +
+         " " + s + R"("/></geometry></collision></link></robot>)";
+}
+
+}  // namespace
+
+TEST(PhysicsWorld, MovingMeshIsAConvexHullThatRestsAtItsSize) {
+  PhysicsWorld world(noGround());
+  world.addModel(groundPlane(), Eigen::Isometry3d::Identity());
+  PhysicsModel& cube = world.addModel(parse(meshBoxUrdf("cube", 0.3)), xyzRpy(0, 0, 1, 0, 0, 0));
+  for (int i = 0; i < 2000; ++i) world.step();
+  EXPECT_NEAR(cube.pose().translation().z(), 0.15, 0.004);  // hull margin is 1 mm
+}
+
+TEST(PhysicsWorld, StaticMeshIsATriangleMeshThatHoldsABox) {
+  PhysicsWorld world(noGround());
+  ModelDescription slab = parse(meshBoxUrdf("slab", 2.0));
+  slab.is_static = true;
+  world.addModel(slab, Eigen::Isometry3d::Identity());  // top face at z = 1
+  PhysicsModel& box = world.addModel(parse(kBox), xyzRpy(0.2, 0.1, 1.5, 0, 0, 0));
+  for (int i = 0; i < 2000; ++i) world.step();
+  EXPECT_NEAR(box.pose().translation().z(), 1.1, 0.004);
+}
+
+TEST(PhysicsWorld, ContactFrictionComesFromMu) {
+  // A 1 kg box pushed sideways with 3 N: it holds with mu 1 and slides with mu 0.1. The ground
+  // has mu 100 like Gazebo's ground_plane: contacts take the smaller coefficient, as in ODE.
+  auto slide = [](double mu) {
+    PhysicsWorld world(noGround());
+    ModelDescription ground = groundPlane();
+    ground.links[0].mu1 = 100;
+    ground.links[0].mu2 = 100;
+    world.addModel(ground, Eigen::Isometry3d::Identity());
+    ModelDescription box = parse(kBox);
+    box.links[0].mu1 = box.links[0].mu2 = mu;
+    PhysicsModel& model = world.addModel(box, xyzRpy(0, 0, 0.1, 0, 0, 0));
+    for (int i = 0; i < 300; ++i) world.step();  // settle
+    const double x0 = model.pose().translation().x();
+    for (int i = 0; i < 1000; ++i) {
+      model.addLinkWrench("body", Eigen::Vector3d(3, 0, 0), Eigen::Vector3d::Zero(), model.pose().translation());
+      world.step();
+    }
+    return model.pose().translation().x() - x0;
+  };
+  EXPECT_LT(slide(1.0), 0.005);
+  // (3 - 0.1 * 9.8) / 1 kg = 2.02 m/s^2 for 1 s: about 1 m.
+  EXPECT_NEAR(slide(0.1), 0.5 * 2.02, 0.1);
+}
