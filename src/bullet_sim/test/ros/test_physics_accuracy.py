@@ -45,16 +45,18 @@ class PhysicsAccuracyTest(unittest.TestCase):
         self.set_update_rate(physics, 400.0)
         sub = rospy.Subscriber('/gazebo/link_states', LinkStates, on_states, queue_size=1, buff_size=1 << 20,
                                tcp_nodelay=True)
-        time.sleep(0.5)
+        deadline = time.monotonic() + 10.0
+        while not samples and time.monotonic() < deadline:  # states come at 10 Hz while paused
+            time.sleep(0.05)
         self.gz.run_for(4.0)
         sub.unregister()
         self.set_update_rate(physics, physics.max_update_rate)
 
         crossings = []
         for (t0, a0), (t1, a1) in zip(samples, samples[1:]):
-            if a0 != 0 and (a0 < 0) != (a1 < 0) and t1 > t0:
+            if a0 != 0 and (a0 < 0) != (a1 < 0) and t1 >= t0:
                 crossings.append(t0 + (t1 - t0) * a0 / (a0 - a1))
-        self.assertGreaterEqual(len(crossings), 8, 'the pendulum did not swing')
+        self.assertGreaterEqual(len(crossings), 6, 'the pendulum did not swing: %d samples' % len(samples))
         period = 2 * float(np.median(np.diff(crossings)))
         expected = 2 * math.pi * math.sqrt((I_BOB + M * L * L) / (M * G * L))
         print('pendulum period %.5f s, small-angle theory %.5f s, error %.3f%% (%d half swings)'
