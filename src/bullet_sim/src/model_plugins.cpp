@@ -4,6 +4,7 @@
 
 #include "bullet_sim/description_error.h"
 #include "bullet_sim/laser_publisher.h"
+#include "bullet_sim/ros_control_plugin.h"
 
 namespace bullet_sim {
 
@@ -22,6 +23,9 @@ std::vector<std::unique_ptr<ModelPlugin>> makeModelPlugins(PhysicsWorld& world, 
     }
     plugins.push_back(std::make_unique<LaserPublisher>(laser, world, model, robot_namespace));
   }
+  RosControlConfig ros_control;
+  if (findRosControlPlugin(description, ros_control))
+    plugins.push_back(std::make_unique<RosControlPlugin>(model, ros_control, world.settings().max_step_size));
   return plugins;
 }
 

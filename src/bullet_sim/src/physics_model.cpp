@@ -75,6 +75,8 @@ PhysicsModel::PhysicsModel(const ModelDescription& description, const Eigen::Iso
 }
 
 PhysicsModel::~PhysicsModel() {
+  for (auto& m : motors_)
+    if (m) world_.removeMultiBodyConstraint(m.get());
   for (auto& c : constraints_) world_.removeMultiBodyConstraint(c.get());
   for (auto& c : colliders_) world_.removeCollisionObject(c.get());
   for (auto& o : static_objects_) world_.removeCollisionObject(o.get());
@@ -225,6 +227,8 @@ void PhysicsModel::buildMultiBody(const Eigen::Isometry3d& pose, double step_siz
   }
   pending_effort_.assign(joints_.size(), 0.0);
   applied_effort_.assign(joints_.size(), 0.0);
+  motors_.resize(joints_.size());
+  step_size_ = step_size;
   updateKinematics();
 }
 
@@ -351,6 +355,27 @@ void PhysicsModel::setJointState(int j, double position, double velocity) {
 }
 
 void PhysicsModel::addJointEffort(int j, double effort) { pending_effort_[j] += effort; }
+
+void PhysicsModel::setJointMotor(int j, double position, double velocity, double position_gain, double max_force) {
+  auto& motor = motors_[j];
+  if (!motor) {
+    motor = std::make_unique<btMultiBodyJointMotor>(multibody_.get(), joint_body_[j], 0.0, 0.0);
+    world_.addMultiBodyConstraint(motor.get());
+  }
+  motor->setVelocityTarget(velocity, 1.0);
+  motor->setPositionTarget(position, position_gain);
+  motor->setMaxAppliedImpulse(max_force * step_size_);
+}
+
+void PhysicsModel::clearJointMotor(int j) {
+  if (!motors_[j]) return;
+  world_.removeMultiBodyConstraint(motors_[j].get());
+  motors_[j].reset();
+}
+
+double PhysicsModel::jointMotorForce(int j) const {
+  return motors_[j] ? motors_[j]->getAppliedImpulse(0) / step_size_ : 0.0;
+}
 
 void PhysicsModel::beforeStep() {
   if (!multibody_) return;

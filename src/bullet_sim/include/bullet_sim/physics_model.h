@@ -4,6 +4,7 @@
 // The model frame is the root link's frame.
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraint.h>
+#include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
 #include <map>
@@ -61,6 +62,12 @@ class PhysicsModel {
   double jointEffort(int j) const { return applied_effort_[j]; }  // applied in the last step
   void setJointState(int j, double position, double velocity);
   void addJointEffort(int j, double effort);  // for the next step only
+  // A motor the solver drives (the joint follows through the physics, nothing teleports):
+  // position_gain > 0 aims at `position`, and the velocity error is always corrected toward
+  // `velocity`, with at most max_force. Stays on until clearJointMotor.
+  void setJointMotor(int j, double position, double velocity, double position_gain, double max_force);
+  void clearJointMotor(int j);
+  double jointMotorForce(int j) const;  // applied by the motor in the last step
 
   // Called by PhysicsWorld around each step.
   void beforeStep();
@@ -91,6 +98,8 @@ class PhysicsModel {
   std::vector<std::unique_ptr<btCollisionObject>> static_objects_;
   Eigen::Isometry3d static_pose_ = Eigen::Isometry3d::Identity();  // a static model's frame
   std::vector<std::unique_ptr<btMultiBodyConstraint>> constraints_;
+  std::vector<std::unique_ptr<btMultiBodyJointMotor>> motors_;  // per joint, created on first use
+  double step_size_ = 0.001;
 };
 
 }  // namespace bullet_sim

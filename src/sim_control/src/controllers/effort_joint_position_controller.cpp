@@ -1,0 +1,58 @@
+// effort_controllers/JointPositionController: a PID (gains under <controller>/pid) turns the
+// position on <controller>/command (std_msgs/Float64) into an effort on `joint`; it reports on
+// <controller>/state (control_msgs/JointControllerState) every 10th update.
+#include <std_msgs/Float64.h>
+
+#include "controller_util.h"
+#include "sim_control/controller_registry.h"
+#include "sim_control/params.h"
+
+namespace sim_control {
+namespace {
+
+using controllers::clampEffort;
+using controllers::enforcePositionLimits;
+using controllers::positionError;
+
+class JointPositionController : public Controller {
+ public:
+  bool init(RobotHW& hw, ros::NodeHandle& /*root_nh*/, ros::NodeHandle& controller_nh, std::string& error) override {
+    std::string name;
+    if (!getRequiredString(controller_nh, "joint", "the name of a joint", name, error)) return false;
+    joint_ = claim(hw, name, InterfaceType::Effort, error);
+    if (!joint_ || !pid_.init(ros::NodeHandle(controller_nh, "pid"), error)) return false;
+    state_.init(controller_nh);
+    sub_ = controller_nh.subscribe("command", 1, &JointPositionController::commandCallback, this);
+    return true;
+  }
+
+  void starting(const ros::Time& /*time*/) override {
+    command_.set(enforcePositionLimits(*joint_, joint_->position));
+    pid_.reset();
+  }
+
+  void update(const ros::Time& time, const ros::Duration& period) override {
+    double target;
+    command_.get(target);
+    target = enforcePositionLimits(*joint_, target);
+    const double error = positionError(*joint_, target);
+    // As ros_controllers does for a plain Float64 command: the PID differentiates the error
+    // itself (computeCommand(error, period)), rather than using -velocity as the error rate.
+    const double effort = clampEffort(*joint_, pid_.compute(error, period.toSec()));
+    joint_->command = effort;
+    state_.publish(time, period, target, joint_->position, joint_->velocity, error, effort, pid_);
+  }
+
+ private:
+  void commandCallback(const std_msgs::Float64ConstPtr& msg) { command_.set(msg->data); }
+
+  JointData* joint_ = nullptr;
+  Pid pid_;
+  controllers::CommandBuffer<double> command_;
+  controllers::ControllerStatePublisher state_;
+  ros::Subscriber sub_;  // last, so it is shut down before the members its callback uses go away
+};
+
+}  // namespace
+SIM_CONTROL_REGISTER_CONTROLLER("effort_controllers/JointPositionController", JointPositionController)
+}  // namespace sim_control
