@@ -17,8 +17,6 @@ EXIT_BAD_ARGS = 2
 BEST_EFFORT = 1
 STRICT = 2
 
-SERVICES = ('list_controllers', 'list_controller_types', 'load_controller', 'unload_controller',
-            'switch_controller', 'reload_controller_libraries')
 PLUGIN_FILE = 'libgazebo_ros_control.so'
 DEFAULT_TIMEOUT = 30.0
 DEFAULT_SHUTDOWN_TIMEOUT = 2.0
