@@ -1,0 +1,107 @@
+#!/usr/bin/python3
+"""Real-time factor of the simulator with controllers running (issue 3): the tutorials' robots
+brought up by their own launch files, headless, each on a private roscore.
+
+  bench_control_rtf.py [--seconds S]
+
+  simple_model  simple_model_control simple_model.launch: JointStateController + an effort
+                JointPositionController at 1 kHz, the 32-beam lidar subscribed (so it casts)
+  arm           arm_control exercise.launch bringup:=true: six controllers at 1 kHz while the
+                exercise node commands both arms at 50 Hz
+
+For each: the factor at the world's real_time_factor 1, then unthrottled (max_update_rate 0).
+Reuses bench_node_rtf.py's process handling and /clock recorder. Output lines:
+  control real-time factor (<robot>, real time): X
+  control real-time factor (<robot>, unthrottled): Y
+"""
+import argparse
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bench_node_rtf import Processes, Recorder, free_port, measure, rosgraph_service_up, wait_until  # noqa: E402
+
+ROBOTS = [
+    ('simple_model', ['simple_model_control', 'simple_model.launch'], '/simple_model',
+     'joint1_position_controller', '/simple_lidar/scan'),
+    ('arm', ['arm_control', 'exercise.launch', 'bringup:=true'], '/arm', 'joint1_1_controller', None),
+]
+
+
+def bench(robot, launch, namespace, controller, scan_topic, seconds, procs):
+    port = free_port()
+    env = dict(os.environ, ROS_MASTER_URI='http://127.0.0.1:%d' % port, ROS_IP='127.0.0.1',
+               ROS_HOME=procs.log_dir, ROS_LOG_DIR=os.path.join(procs.log_dir, 'ros_log'))
+    env.pop('ROS_HOSTNAME', None)
+    os.environ.clear()
+    os.environ.update(env)
+    import rosgraph
+    import rospy
+    from controller_manager_msgs.srv import ListControllers
+    from gazebo_msgs.srv import GetPhysicsProperties, SetPhysicsProperties
+
+    procs.start('roscore_' + robot, ['roscore', '-p', str(port)], env)
+    master = rosgraph.Master('/bench_control_rtf', master_uri=env['ROS_MASTER_URI'])
+    wait_until(lambda: rosgraph_service_up(master, '/rosout/get_loggers'), 30, 'roscore', procs)
+    procs.start('launch_' + robot, ['roslaunch'] + launch, env)
+    rospy.init_node('bench_control_rtf', anonymous=True, disable_signals=True)
+    rec = Recorder()
+    subs = [rospy.Subscriber('/clock', rospy.AnyMsg, rec.on_clock, queue_size=1000, tcp_nodelay=True)]
+    if scan_topic:
+        subs.append(rospy.Subscriber(scan_topic, rospy.AnyMsg, rec.on_scan, queue_size=1000, tcp_nodelay=True))
+    list_service = namespace + '/controller_manager/list_controllers'
+    wait_until(lambda: rosgraph_service_up(master, list_service), 90, list_service, procs)
+    lister = rospy.ServiceProxy(list_service, ListControllers)
+    wait_until(lambda: any(c.name == controller and c.state == 'running' for c in lister().controller), 60,
+               '%s running' % controller, procs)
+    time.sleep(1.0)
+    running = sum(c.state == 'running' for c in lister().controller)
+    results = [measure(rec, seconds, 'real time')]
+    props = rospy.ServiceProxy('/gazebo/get_physics_properties', GetPhysicsProperties)()
+    rospy.ServiceProxy('/gazebo/set_physics_properties', SetPhysicsProperties)(
+        time_step=props.time_step, max_update_rate=0.0, gravity=props.gravity, ode_config=props.ode_config)
+    time.sleep(1.0)
+    results.append(measure(rec, seconds, 'unthrottled'))
+    for r in results:
+        print('control real-time factor (%s, %s): %.2f' % (robot, r['label'], r['rtf']))
+        print('  %d controllers running; %.2f s sim in %.2f s wall%s' % (
+            running, r['sim'], r['wall'], ('; %d scans on %s' % (r['scans'], scan_topic)) if scan_topic else ''))
+    sys.stdout.flush()
+    for s in subs:
+        s.unregister()
+    procs.stop_all()
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
+    parser.add_argument('--seconds', type=float, default=8.0, help='wall seconds per measurement (default 8)')
+    parser.add_argument('--robot', choices=[r[0] for r in ROBOTS], help='only this robot (default: each in turn)')
+    args = parser.parse_args()
+    if not args.robot:
+        # One process per robot: rospy cannot move to another master once initialised.
+        status = 0
+        for robot in ROBOTS:
+            status |= subprocess.call([sys.executable, os.path.abspath(__file__), '--robot', robot[0],
+                                       '--seconds', str(args.seconds)])
+        return status
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))
+    log_dir = tempfile.mkdtemp(prefix='bench_control_rtf.')
+    procs = Processes(log_dir)
+    try:
+        bench(*next(r for r in ROBOTS if r[0] == args.robot), args.seconds, procs)
+        shutil.rmtree(log_dir, ignore_errors=True)
+        return 0
+    except Exception as e:  # noqa: BLE001 - reported, then everything is stopped
+        print('bench_control_rtf: %s (logs in %s)' % (e, log_dir), file=sys.stderr)
+        return 1
+    finally:
+        procs.stop_all()
+
+
+if __name__ == '__main__':
+    sys.exit(main())
