@@ -2,6 +2,7 @@
 """The arm exercise runs headless and both arms track their commands: the RMS of each
 controller's error (set point - position, from its stamped state messages) over two cycles."""
 import math
+import subprocess
 import unittest
 
 import rospy
@@ -38,9 +39,24 @@ class ExerciseTest(unittest.TestCase):
             travel = max(pv for _, pv in data) - min(pv for _, pv in data)
             report.append((joint, rms, travel))
         print('arm exercise tracking: ' + '; '.join('%s rms %.4f rad over %.2f rad of travel' % r for r in report))
+        self.check_the_reports_commands()
         for joint, rms, travel in report:
             self.assertGreater(travel, 0.5, '%s barely moved' % joint)
             self.assertLess(rms, 0.05, '%s tracks poorly' % joint)
+
+
+    def check_the_reports_commands(self):
+        """The report's switch_controller and rostopic commands, as written (namespace /arm)."""
+        def run(*argv):
+            done = subprocess.run(list(argv), capture_output=True, text=True, timeout=60)
+            self.assertEqual(done.returncode, 0, done.stdout + done.stderr)
+            return done.stdout
+        switch = '/arm/controller_manager/switch_controller'
+        self.assertIn('ok: True', run('rosservice', 'call', switch,
+                                      "{start_controllers: [], stop_controllers: ['joint1_1_controller'], strictness: 2}"))
+        self.assertIn('ok: True', run('rosservice', 'call', switch,
+                                      "{start_controllers: ['joint1_1_controller'], stop_controllers: [], strictness: 2}"))
+        run('rostopic', 'pub', '-1', '/arm/joint1_1_controller/command', 'std_msgs/Float64', 'data: 1.57')
 
 
 if __name__ == '__main__':
