@@ -6,6 +6,7 @@
 #include "bullet_sim/description_error.h"
 #include "bullet_sim/gazebo_ros_api.h"
 #include "bullet_sim/model_plugins.h"
+#include "bullet_sim/scene_markers.h"
 
 namespace bullet_sim {
 namespace {
@@ -26,6 +27,7 @@ Simulator::Simulator(const WorldDescription& world, const ResourceResolver& reso
   clock_publisher_ = node_.advertise<rosgraph_msgs::Clock>("/clock", 10);
   for (const PlacedModel& placed : world.models) spawn(placed.model, placed.pose, "");
   api_ = std::make_unique<GazeboRosApi>(*this);
+  scene_markers_ = std::make_unique<SceneMarkers>(physics_);
   publishClock(true);
 }
 
@@ -78,6 +80,7 @@ void Simulator::stepOnce() {
   for (auto& [name, plugins] : plugins_)
     for (auto& p : plugins) p->afterStep(after);
   api_->afterStep(after);
+  scene_markers_->publish();
   publishClock(false);
 }
 
@@ -107,6 +110,7 @@ void Simulator::run() {
       if (ros::WallTime::now() - last_clock_wall_ > kPausedClockPeriod) {
         publishClock(true);
         api_->publishStates(true);
+        scene_markers_->publish();
       }
       continue;
     }

@@ -17,6 +17,7 @@
 namespace bullet_sim {
 
 class GazeboRosApi;
+class SceneMarkers;
 
 struct SimulatorOptions {
   bool paused = false;
@@ -63,6 +64,7 @@ class Simulator {
   ros::Time last_clock_;
   ros::WallTime last_clock_wall_;
   std::unique_ptr<GazeboRosApi> api_;
+  std::unique_ptr<SceneMarkers> scene_markers_;
   // Pacing: wall time and sim time at the last (re)start of real-time tracking.
   ros::WallTime pace_wall_start_;
   double pace_sim_start_ = 0.0;

@@ -12,6 +12,7 @@ import rostest
 from gazebo_msgs.msg import ModelStates
 from geometry_msgs.msg import Point, Wrench
 from rosgraph_msgs.msg import Clock
+from visualization_msgs.msg import Marker, MarkerArray
 
 from sim_test_utils import G, Gazebo, package_path, pose, read, test_path
 
@@ -112,6 +113,17 @@ class GazeboApiTest(unittest.TestCase):
         self.assertTrue(state.success)
         self.assertAlmostEqual(state.pose.position.x, 1.0, places=6)
         self.assertAlmostEqual(state.pose.orientation.z, math.sin(0.25), places=6)
+
+    def test_scene_markers_show_every_model_for_rviz(self):
+        self.assertTrue(self.gz.spawn_urdf('box', BOX, pose(1, 2, 3)).success)
+        markers = rospy.wait_for_message('/gazebo/scene_markers', MarkerArray, timeout=5).markers
+        box = [m for m in markers if m.ns == 'box']
+        self.assertEqual(len(box), 1)
+        self.assertEqual(box[0].type, Marker.CUBE)
+        self.assertEqual(box[0].header.frame_id, 'world')
+        self.assertAlmostEqual(box[0].scale.x, 0.2)
+        self.assertAlmostEqual(box[0].pose.position.y, 2.0)
+        self.assertTrue(any(m.ns == 'ground_plane' for m in markers))
 
     # --- forces and reset -----------------------------------------------------------------------
 

@@ -1,0 +1,26 @@
+#pragma once
+// gzclient's view for rviz: every model's visuals as visualization_msgs/MarkerArray in frame
+// "world" on /gazebo/scene_markers, at about 10 Hz of wall time while someone subscribes, so
+// rviz shows the world (walls, obstacles, robots) and not only what a robot's sensors see.
+#include <ros/ros.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include "bullet_sim/physics_world.h"
+
+namespace bullet_sim {
+
+class SceneMarkers {
+ public:
+  explicit SceneMarkers(PhysicsWorld& world);
+  void publish(bool force = false);  // at most every 0.1 s of wall time unless forced
+
+ private:
+  PhysicsWorld& world_;
+  ros::Publisher publisher_;
+  ros::WallTime last_;
+};
+
+// The markers for one model (namespace = model name), poses at the current state.
+void appendModelMarkers(const PhysicsModel& model, const ros::Time& stamp, visualization_msgs::MarkerArray& out);
+
+}  // namespace bullet_sim

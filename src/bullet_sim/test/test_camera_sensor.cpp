@@ -1,0 +1,479 @@
+// Camera sensor: parsing of <sensor type="camera"> blocks, CameraInfo intrinsics, and rendered
+// pictures checked against the pinhole model (sizes, orientation, occlusion, clipping, textures).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <string>
+#include <vector>
+
+#include "bullet_sim/camera_sensor.h"
+#include "bullet_sim/description_error.h"
+#include "bullet_sim/physics_world.h"
+
+namespace bullet_sim {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// ---------------------------------------------------------------------------------------------
+// Parsing
+// ---------------------------------------------------------------------------------------------
+
+std::vector<CameraConfig> parse(const std::string& xml, const std::string& reference = "camera_link") {
+  return parseCameraSensors({GazeboExtension{reference, xml}}, "model.urdf");
+}
+
+std::string sensor(const std::string& body, const std::string& plugin = "") {
+  return "<gazebo reference='camera_link'><sensor name='cam' type='camera'>" + body + plugin + "</sensor></gazebo>";
+}
+
+std::string errorOf(const std::string& xml, const std::string& reference = "camera_link") {
+  try {
+    parse(xml, reference);
+  } catch (const DescriptionError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(CameraParse, DefaultsAreGazebos) {
+  const auto cams = parse(sensor(""));
+  ASSERT_EQ(cams.size(), 1u);
+  const CameraConfig& c = cams[0];
+  EXPECT_EQ(c.name, "cam");
+  EXPECT_EQ(c.link, "camera_link");
+  EXPECT_TRUE(c.pose.isApprox(Eigen::Isometry3d::Identity()));
+  EXPECT_EQ(c.update_rate, 0.0);
+  EXPECT_DOUBLE_EQ(c.horizontal_fov, 1.047);
+  EXPECT_EQ(c.width, 320);
+  EXPECT_EQ(c.height, 240);
+  EXPECT_EQ(c.format, "R8G8B8");
+  EXPECT_EQ(c.encoding, "rgb8");
+  EXPECT_DOUBLE_EQ(c.near_clip, 0.1);
+  EXPECT_DOUBLE_EQ(c.far_clip, 100.0);
+  EXPECT_EQ(c.noise_type, "none");
+  EXPECT_EQ(c.plugin_filename, "");
+  EXPECT_EQ(c.image_topic_name, "image_raw");
+  EXPECT_EQ(c.camera_info_topic_name, "camera_info");
+  EXPECT_EQ(c.camera_name, "");
+  EXPECT_EQ(c.frame_name, "");
+  EXPECT_FALSE(c.robot_namespace_given);
+  EXPECT_EQ(c.plugin_update_rate, 0.0);
+  EXPECT_EQ(c.hack_baseline, 0.0);
+}
+
+// The rrbot tutorial's camera, plus the optional plugin parameters.
+const char* kRrbotCamera = R"(
+<gazebo reference="camera_link">
+  <sensor type="camera" name="camera1">
+    <pose>0.1 0 0.2 0 0.5 0</pose>
+    <update_rate>30.0</update_rate>
+    <camera name="head">
+      <horizontal_fov>1.3962634</horizontal_fov>
+      <image><width>800</width><height>600</height><format>B8G8R8</format></image>
+      <clip><near>0.02</near><far>300</far></clip>
+      <noise><type>gaussian</type><mean>0.0</mean><stddev>0.007</stddev></noise>
+    </camera>
+    <plugin name="camera_controller" filename="libgazebo_ros_camera.so">
+      <alwaysOn>true</alwaysOn>
+      <updateRate>10.0</updateRate>
+      <robotNamespace>/rrbot</robotNamespace>
+      <cameraName>rrbot/camera1</cameraName>
+      <imageTopicName>image</imageTopicName>
+      <cameraInfoTopicName>info</cameraInfoTopicName>
+      <frameName>/camera_link_optical</frameName>
+      <hackBaseline>0.07</hackBaseline>
+      <distortionK1>0.1</distortionK1><distortionK2>0.2</distortionK2><distortionK3>0.3</distortionK3>
+      <distortionT1>0.4</distortionT1><distortionT2>0.5</distortionT2>
+    </plugin>
+  </sensor>
+</gazebo>)";
+
+TEST(CameraParse, EveryField) {
+  const auto cams = parse(kRrbotCamera);
+  ASSERT_EQ(cams.size(), 1u);
+  const CameraConfig& c = cams[0];
+  EXPECT_EQ(c.name, "camera1");
+  EXPECT_TRUE(c.pose.translation().isApprox(Eigen::Vector3d(0.1, 0, 0.2)));
+  EXPECT_TRUE(c.pose.linear().isApprox(Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitY()).toRotationMatrix()));
+  EXPECT_EQ(c.update_rate, 30.0);
+  EXPECT_DOUBLE_EQ(c.horizontal_fov, 1.3962634);
+  EXPECT_EQ(c.width, 800);
+  EXPECT_EQ(c.height, 600);
+  EXPECT_EQ(c.encoding, "bgr8");
+  EXPECT_DOUBLE_EQ(c.near_clip, 0.02);
+  EXPECT_DOUBLE_EQ(c.far_clip, 300);
+  EXPECT_EQ(c.noise_type, "gaussian");
+  EXPECT_DOUBLE_EQ(c.noise_stddev, 0.007);
+  EXPECT_EQ(c.plugin_filename, "libgazebo_ros_camera.so");
+  EXPECT_EQ(c.plugin_name, "camera_controller");
+  EXPECT_EQ(c.plugin_update_rate, 10.0);
+  EXPECT_TRUE(c.robot_namespace_given);
+  EXPECT_EQ(c.robot_namespace, "/rrbot");
+  EXPECT_EQ(c.camera_name, "rrbot/camera1");
+  EXPECT_EQ(c.image_topic_name, "image");
+  EXPECT_EQ(c.camera_info_topic_name, "info");
+  EXPECT_EQ(c.frame_name, "/camera_link_optical");
+  EXPECT_DOUBLE_EQ(c.hack_baseline, 0.07);
+
+  const CameraIntrinsics k = cameraIntrinsics(c);
+  const double f = 800 / (2 * std::tan(1.3962634 / 2));
+  EXPECT_NEAR(k.fx, f, 1e-9);
+  EXPECT_NEAR(k.fy, f, 1e-9);
+  EXPECT_DOUBLE_EQ(k.cx, 400.5);  // gazebo_ros_camera_utils: (width + 1) / 2
+  EXPECT_DOUBLE_EQ(k.cy, 300.5);
+  EXPECT_EQ(k.K, (std::array<double, 9>{f, 0, 400.5, 0, f, 300.5, 0, 0, 1}));
+  EXPECT_EQ(k.R, (std::array<double, 9>{1, 0, 0, 0, 1, 0, 0, 0, 1}));
+  EXPECT_EQ(k.P, (std::array<double, 12>{f, 0, 400.5, -f * 0.07, 0, f, 300.5, 0, 0, 0, 1, 0}));
+  EXPECT_EQ(k.D, (std::array<double, 5>{0.1, 0.2, 0.4, 0.5, 0.3}));  // k1 k2 t1 t2 k3
+}
+
+TEST(CameraParse, SdfSensorBlockAndOtherSensors) {
+  // An SDF <sensor> arrives as its own block; ray sensors and other plugins are not cameras.
+  const std::vector<GazeboExtension> blocks = {
+      {"base", "<sensor name='eye' type='camera'><camera><image><format>L8</format></image></camera>"
+               "<plugin name='x' filename='libsomething_else.so'/></sensor>"},
+      {"base", "<sensor name='lidar' type='ray'/>"},
+      {"base", "<gazebo reference='base'><sensor name='d' type='depth'/></gazebo>"}};
+  const auto cams = parseCameraSensors(blocks, "m.sdf");
+  ASSERT_EQ(cams.size(), 1u);
+  EXPECT_EQ(cams[0].name, "eye");
+  EXPECT_EQ(cams[0].encoding, "mono8");
+  EXPECT_EQ(cams[0].plugin_filename, "");
+  EXPECT_TRUE(parse(sensor("", "<plugin name='p' filename='libgazebo_ros_camera.so'><robotNamespace/></plugin>"))[0]
+                  .robot_namespace_given);
+}
+
+TEST(CameraParse, ErrorsNameSourceElementAndExpectation) {
+  EXPECT_EQ(errorOf(sensor("<camera name='head'><horizontal_fov>4</horizontal_fov></camera>")),
+            "model.urdf: <gazebo reference='camera_link'>/<sensor name='cam'>/<camera name='head'>/<horizontal_fov>: "
+            "expected a number in (0, pi) radians, got '4'");
+  EXPECT_EQ(errorOf(sensor("<camera><image><width>wide</width></image></camera>")),
+            "model.urdf: <gazebo reference='camera_link'>/<sensor name='cam'>/<camera>/<image>/<width>: "
+            "expected an integer number of pixels in [1, 16384], got 'wide'");
+  EXPECT_EQ(errorOf(sensor("<camera><image><format>R16G16B16</format></image></camera>")),
+            "model.urdf: <gazebo reference='camera_link'>/<sensor name='cam'>/<camera>/<image>/<format>: "
+            "expected one of R8G8B8, RGB_INT8, B8G8R8, BGR_INT8, L8, L_INT8, got 'R16G16B16'");
+  EXPECT_EQ(errorOf(sensor("<camera><clip><near>200</near></clip></camera>")),
+            "model.urdf: <gazebo reference='camera_link'>/<sensor name='cam'>/<camera>/<clip>/<far>: "
+            "expected a number > <near> (200), got (missing, default 100)");
+  EXPECT_EQ(errorOf(sensor("<camera><clip><near>0</near></clip></camera>")),
+            "model.urdf: <gazebo reference='camera_link'>/<sensor name='cam'>/<camera>/<clip>/<near>: "
+            "expected a number > 0, got '0'");
+  EXPECT_EQ(errorOf(sensor("<camera><noise><type>salt</type></noise></camera>")),
+            "model.urdf: <gazebo reference='camera_link'>/<sensor name='cam'>/<camera>/<noise>/<type>: "
+            "expected one of none, gaussian, gaussian_quantized, got 'salt'");
+  EXPECT_EQ(errorOf(sensor("<update_rate>-1</update_rate>")),
+            "model.urdf: <gazebo reference='camera_link'>/<sensor name='cam'>/<update_rate>: "
+            "expected a number >= 0, got '-1'");
+  EXPECT_EQ(errorOf(sensor("", "<plugin name='p' filename='libgazebo_ros_camera.so'><imageTopicName> "
+                               "</imageTopicName></plugin>")),
+            "model.urdf: <gazebo reference='camera_link'>/<sensor name='cam'>/<plugin name='p'>/<imageTopicName>: "
+            "expected a topic name, got an empty element");
+  EXPECT_EQ(errorOf(sensor("", "<plugin name='p' filename='libgazebo_ros_camera.so'><updateRate>fast</updateRate>"
+                               "</plugin>")),
+            "model.urdf: <gazebo reference='camera_link'>/<sensor name='cam'>/<plugin name='p'>/<updateRate>: "
+            "expected a number >= 0, got 'fast'");
+  EXPECT_EQ(errorOf("<gazebo><sensor name='cam' type='camera'/></gazebo>", ""),
+            "model.urdf: <gazebo>/<sensor name='cam'>: expected the sensor's <gazebo> block to name its link with "
+            "reference='LINK'");
+  EXPECT_NE(errorOf("<gazebo reference='camera_link'><sensor>").find("model.urdf: <gazebo reference='camera_link'>: "
+                                                                     "malformed XML"),
+            std::string::npos);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Rendering
+// ---------------------------------------------------------------------------------------------
+
+Eigen::Isometry3d at(double x, double y, double z, double yaw = 0, double pitch = 0) {
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  t.translation() = Eigen::Vector3d(x, y, z);
+  t.linear() = (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()))
+                   .toRotationMatrix();
+  return t;
+}
+
+VisualShape box(double sx, double sy, double sz, std::array<float, 4> rgba) {
+  VisualShape v;
+  v.geometry.type = GeometryType::Box;
+  v.geometry.box_size = Eigen::Vector3d(sx, sy, sz);
+  v.rgba = rgba;
+  return v;
+}
+
+const std::array<float, 4> kRed{{1, 0, 0, 1}}, kGreen{{0, 1, 0, 1}}, kGrey{{0.7f, 0.7f, 0.7f, 1}};
+
+VisualShape ground() {
+  VisualShape v;
+  v.geometry.type = GeometryType::Plane;  // normal z, 100 x 100, as model://ground_plane
+  v.rgba = kGrey;
+  return v;
+}
+
+// A 200 x 200 camera with a 90 degree field of view: f = 100 px, the axis through (100, 100).
+CameraConfig camera() {
+  CameraConfig c;
+  c.width = 200;
+  c.height = 200;
+  c.horizontal_fov = kPi / 2;
+  c.near_clip = 0.05;
+  c.far_clip = 100;
+  return c;
+}
+
+struct Rgb {
+  int r, g, b;
+};
+Rgb px(const RgbImage& im, int x, int y) {
+  const std::uint8_t* p = im.pixel(x, y);
+  return {p[0], p[1], p[2]};
+}
+bool isRed(Rgb c) { return c.r > 60 && c.r > 3 * c.g && c.r > 3 * c.b; }
+bool isGreen(Rgb c) { return c.g > 60 && c.g > 3 * c.r && c.g > 3 * c.b; }
+bool isBlue(Rgb c) { return c.b > 60 && c.b > 3 * c.r && c.b > 3 * c.g; }
+bool isYellow(Rgb c) { return c.r > 60 && c.g > 60 && c.r > 3 * c.b && c.g > 3 * c.b; }
+
+// Columns of row y (or rows of column x) where `pred` holds: the first one and how many.
+template <class Pred>
+std::pair<int, int> runInRow(const RgbImage& im, int y, Pred pred) {
+  int first = -1, count = 0;
+  for (int x = 0; x < im.width; ++x)
+    if (pred(px(im, x, y))) first = first < 0 ? x : first, ++count;
+  return {first, count};
+}
+template <class Pred>
+std::pair<int, int> runInColumn(const RgbImage& im, int x, Pred pred) {
+  int first = -1, count = 0;
+  for (int y = 0; y < im.height; ++y)
+    if (pred(px(im, x, y))) first = first < 0 ? y : first, ++count;
+  return {first, count};
+}
+
+class RenderTest : public ::testing::Test {
+ protected:
+  RgbImage render(const std::vector<SceneItem>& items, const Eigen::Isometry3d& cam, const CameraConfig& c = camera()) {
+    RgbImage im;
+    renderer_.render(items, cam, c, im);
+    return im;
+  }
+  SceneRenderer renderer_;
+  const VisualShape ground_ = ground();
+  const VisualShape red_box_ = box(1, 1, 1, kRed);
+};
+
+TEST_F(RenderTest, RedBoxOnGroundMatchesThePinholeModel) {
+  // Camera 0.5 m up looking along +x; the box's front face at x = 2.5 spans y, z in [-0.5, 0.5]
+  // around the optical axis: 100 * 0.5 / 2.5 = 20 px each way.
+  const auto im = render({{&ground_, Eigen::Isometry3d::Identity()}, {&red_box_, at(3, 0, 0.5)}}, at(0, 0, 0.5));
+  EXPECT_TRUE(isRed(px(im, 100, 100)));
+  const auto [x0, width] = runInRow(im, 100, isRed);
+  EXPECT_NEAR(x0, 80, 1);
+  EXPECT_NEAR(width, 40, 2);
+  const auto [y0, height] = runInColumn(im, 100, isRed);
+  EXPECT_NEAR(y0, 80, 1);
+  EXPECT_NEAR(height, 40, 2);
+
+  // Above the horizon: the background; below: the lit ground, 0.7 * (0.4 + 0.8 * cos(sun, z)).
+  const Rgb sky = px(im, 10, 10);
+  EXPECT_EQ(sky.r, 179);
+  EXPECT_EQ(sky.g, 179);
+  EXPECT_EQ(sky.b, 179);
+  const double cos_sun = 0.9 / Eigen::Vector3d(-0.5, 0.1, -0.9).norm();
+  const int ground_level = static_cast<int>(std::lround(std::min(1.0, 0.7 * (0.4 + 0.8 * cos_sun)) * 255));
+  const Rgb floor = px(im, 10, 190);
+  EXPECT_NEAR(floor.r, ground_level, 1);
+  EXPECT_EQ(floor.r, floor.g);
+  EXPECT_NE(floor.r, sky.r);
+  // The horizon of a 100 m plane seen from 0.5 m: 50 m away, 100 * 0.5 / 50 = 1 px below centre.
+  const auto [ground_top, ground_rows] = runInColumn(im, 10, [&](Rgb c) { return c.r == floor.r; });
+  EXPECT_NEAR(ground_top, 101, 1);
+  EXPECT_EQ(ground_rows, 200 - ground_top);
+}
+
+TEST_F(RenderTest, OrientationFollowsTheSensorFrame) {
+  // A box to the left (+y) shows on the left; one above (+z) shows at the top.
+  const VisualShape small = box(0.2, 0.2, 0.2, kRed);
+  auto im = render({{&small, at(3, 1, 0.5)}}, at(0, 0, 0.5));
+  auto [x0, w] = runInRow(im, 100, isRed);
+  EXPECT_GT(w, 0);
+  EXPECT_LT(x0 + w, 100);
+  im = render({{&small, at(3, 0, 1.5)}}, at(0, 0, 0.5));
+  auto [y0, h] = runInColumn(im, 100, isRed);
+  EXPECT_GT(h, 0);
+  EXPECT_LT(y0 + h, 100);
+
+  // Turning the camera left (yaw > 0) moves what is ahead to the right of the image...
+  im = render({{&red_box_, at(3, 0, 0.5)}}, at(0, 0, 0.5, 0.2));
+  std::tie(x0, w) = runInRow(im, 100, isRed);
+  EXPECT_GT(x0, 100);
+  EXPECT_NEAR(x0 + w / 2.0, 100 + 100 * std::tan(0.2), 3);
+  // ...a quarter turn loses it, and pitching down (pitch > 0 about y) raises the horizon.
+  im = render({{&red_box_, at(3, 0, 0.5)}}, at(0, 0, 0.5, kPi / 2));
+  EXPECT_EQ(runInRow(im, 100, isRed).second, 0);
+  im = render({{&ground_, Eigen::Isometry3d::Identity()}}, at(0, 0, 0.5, 0, 0.3));
+  const Rgb sky = px(im, 100, 0);
+  const auto [top, rows] = runInColumn(im, 100, [&](Rgb c) { return c.r != sky.r; });
+  EXPECT_NEAR(top, 100 - 100 * std::tan(0.3), 2);
+}
+
+TEST_F(RenderTest, NearerHidesFartherWhateverTheOrder) {
+  const VisualShape big_green = box(1, 3, 3, kGreen);
+  const auto a = render({{&red_box_, at(3, 0, 0.5)}, {&big_green, at(6, 0, 0.5)}}, at(0, 0, 0.5));
+  const auto b = render({{&big_green, at(6, 0, 0.5)}, {&red_box_, at(3, 0, 0.5)}}, at(0, 0, 0.5));
+  EXPECT_TRUE(isRed(px(a, 100, 100)));
+  EXPECT_TRUE(isGreen(px(a, 100, 70)));  // above the red box, the green one behind
+  EXPECT_EQ(a.data, b.data);
+}
+
+TEST_F(RenderTest, BehindTheCameraOrBeyondFarIsNotDrawn) {
+  CameraConfig c = camera();
+  c.far_clip = 10;
+  const auto empty = render({{&ground_, Eigen::Isometry3d::Identity()}}, at(0, 0, 0.5), c);
+  EXPECT_EQ(render({{&ground_, Eigen::Isometry3d::Identity()}, {&red_box_, at(-3, 0, 0.5)}}, at(0, 0, 0.5), c).data,
+            empty.data);
+  EXPECT_EQ(render({{&ground_, Eigen::Isometry3d::Identity()}, {&red_box_, at(20, 0, 0.5)}}, at(0, 0, 0.5), c).data,
+            empty.data);
+  // The ground ends at the far clip: 10 m away is 100 * 0.5 / 10 = 5 px below the axis.
+  const Rgb sky = px(empty, 100, 0);
+  EXPECT_NEAR(runInColumn(empty, 100, [&](Rgb p) { return p.r != sky.r; }).first, 105, 1);
+  // A wall crossing the near plane beside the camera is cut there, not dropped.
+  const VisualShape wall = box(4, 0.1, 2, kRed);
+  const auto side = render({{&wall, at(1.5, 0.5, 0.5)}}, at(0, 0, 0.5));
+  EXPECT_TRUE(isRed(px(side, 5, 100)));
+  EXPECT_FALSE(isRed(px(side, 195, 100)));
+}
+
+// A 64 x 64 image with red, green, blue and yellow quadrants (top-left, top-right, bottom-left,
+// bottom-right as stored in the file).
+std::string quadrantTexture() {
+  const std::string path = (std::filesystem::temp_directory_path() / "bullet_sim_quadrants.png").string();
+  cv::Mat bgr(64, 64, CV_8UC3);
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) {
+      const bool right = x >= 32, bottom = y >= 32;
+      cv::Vec3b c = !bottom ? (right ? cv::Vec3b(0, 255, 0) : cv::Vec3b(0, 0, 255))
+                            : (right ? cv::Vec3b(0, 255, 255) : cv::Vec3b(255, 0, 0));
+      bgr.at<cv::Vec3b>(y, x) = c;
+    }
+  cv::imwrite(path, bgr);
+  return path;
+}
+
+TEST_F(RenderTest, TexturedBoxIsUprightAndUnmirroredOnEveryVerticalFace) {
+  VisualShape panel = box(0.02, 1, 1, {{1, 1, 1, 1}});
+  panel.texture_file = quadrantTexture();
+  // Each case: where the panel is and how it is turned, and where the camera looks from.
+  struct Case {
+    Eigen::Isometry3d panel, camera;
+  };
+  const Case cases[] = {
+      {at(2, 0, 0.5), at(0, 0, 0.5)},                    // its -x face
+      {at(2, 0, 0.5), at(4, 0, 0.5, kPi)},               // its +x face, from behind
+      {at(0, 2, 0.5, kPi / 2), at(0, 0, 0.5, kPi / 2)},  // turned with the camera
+      {at(2, 0, 0.5, 0.4), at(0, 0, 0.5)},               // at an angle
+  };
+  for (const Case& c : cases) {
+    const auto im = render({{&panel, c.panel}}, c.camera);
+    // The panel spans +-0.5 m at 2 m: +-25 px around the centre; sample at +-12 px.
+    EXPECT_TRUE(isRed(px(im, 88, 88)));
+    EXPECT_TRUE(isGreen(px(im, 112, 88)));
+    EXPECT_TRUE(isBlue(px(im, 88, 112)));
+    EXPECT_TRUE(isYellow(px(im, 112, 112)));
+  }
+  // Seen from above (camera pitched straight down, image top toward +x): a top face's image
+  // top is toward the box's +x.
+  VisualShape tile = box(1, 1, 0.02, {{1, 1, 1, 1}});
+  tile.texture_file = panel.texture_file;
+  const auto top = render({{&tile, Eigen::Isometry3d::Identity()}}, at(0, 0, 2, 0, kPi / 2));
+  EXPECT_TRUE(isRed(px(top, 88, 88)));
+  EXPECT_TRUE(isGreen(px(top, 112, 88)));
+  EXPECT_TRUE(isBlue(px(top, 88, 112)));
+  EXPECT_TRUE(isYellow(px(top, 112, 112)));
+}
+
+TEST_F(RenderTest, MissingTextureKeepsTheColourAndWarnsOnce) {
+  VisualShape v = box(1, 1, 1, kRed);
+  v.texture_file = "/nonexistent/marker.png";
+  render({{&v, at(3, 0, 0.5)}}, at(0, 0, 0.5));
+  const auto im = render({{&v, at(3, 0, 0.5)}}, at(0, 0, 0.5));
+  EXPECT_TRUE(isRed(px(im, 100, 100)));
+  const auto warnings = renderer_.takeWarnings();
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("/nonexistent/marker.png"), std::string::npos);
+}
+
+TEST_F(RenderTest, CylindersAndSpheresHaveTheirSize) {
+  VisualShape cyl;
+  cyl.geometry.type = GeometryType::Cylinder;
+  cyl.geometry.radius = 0.5;
+  cyl.geometry.length = 1;
+  cyl.rgba = kRed;
+  VisualShape ball = cyl;
+  ball.geometry.type = GeometryType::Sphere;
+  // Silhouette half-width of radius 0.5 at 3 m: 100 * tan(asin(0.5 / 3)) = 16.9 px; the cylinder's
+  // height at its nearest (2.5 m) is +-20 px.
+  auto im = render({{&cyl, at(3, 0, 0.5)}}, at(0, 0, 0.5));
+  EXPECT_NEAR(runInRow(im, 100, isRed).second, 2 * 16.9, 2);
+  EXPECT_NEAR(runInColumn(im, 100, isRed).second, 40, 2);
+  im = render({{&ball, at(3, 0, 0.5)}}, at(0, 0, 0.5));
+  EXPECT_NEAR(runInRow(im, 100, isRed).second, 2 * 16.9, 2);
+  EXPECT_NEAR(runInColumn(im, 100, isRed).second, 2 * 16.9, 2);
+}
+
+TEST(CameraWorld, RendersTheVisualsOfAPhysicsWorld) {
+  PhysicsWorld world;
+  ModelDescription m;
+  m.name = "marker";
+  m.source = "test";
+  m.is_static = true;
+  m.root_link = "link";
+  LinkDescription link;
+  link.name = "link";
+  VisualShape v = box(1, 1, 1, kRed);
+  v.origin.translation() = Eigen::Vector3d(0, 0, 0.5);  // the visual's origin in its link counts
+  link.visuals.push_back(v);
+  m.links.push_back(link);
+  world.addModel(m, at(3, 0, 0));
+  SceneRenderer renderer;
+  RgbImage im;
+  renderer.render(world, at(0, 0, 0.5), camera(), im);
+  EXPECT_TRUE(isRed(px(im, 100, 100)));
+  EXPECT_NEAR(runInColumn(im, 100, isRed).second, 40, 2);
+}
+
+TEST(CameraImage, NoiseIsRepeatableAndHasItsSpread) {
+  RgbImage a;
+  a.width = 100, a.height = 100;
+  a.data.assign(100 * 100 * 3, 128);
+  RgbImage b = a;
+  ImageNoise(0, 0.02, 7).apply(a);
+  ImageNoise(0, 0.02, 7).apply(b);
+  EXPECT_EQ(a.data, b.data);
+  double sum = 0, sum2 = 0;
+  for (std::uint8_t v : a.data) sum += v - 128, sum2 += (v - 128.0) * (v - 128.0);
+  const double n = a.data.size(), mean = sum / n;
+  EXPECT_NEAR(mean, 0, 0.1);
+  EXPECT_NEAR(std::sqrt(sum2 / n - mean * mean), 0.02 * 255, 0.2);
+}
+
+TEST(CameraImage, Encodings) {
+  RgbImage im;
+  im.width = 1, im.height = 1;
+  im.data = {200, 100, 10};
+  std::vector<std::uint8_t> out;
+  encodeImage(im, "rgb8", out);
+  EXPECT_EQ(out, (std::vector<std::uint8_t>{200, 100, 10}));
+  encodeImage(im, "bgr8", out);
+  EXPECT_EQ(out, (std::vector<std::uint8_t>{10, 100, 200}));
+  encodeImage(im, "mono8", out);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_NEAR(out[0], 0.299 * 200 + 0.587 * 100 + 0.114 * 10, 1);
+}
+
+}  // namespace
+}  // namespace bullet_sim
