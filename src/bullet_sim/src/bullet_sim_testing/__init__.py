@@ -1,0 +1,1 @@
+"""Helpers shared by the robots' rostests: ground truth from wall geometry, driving a robot."""
