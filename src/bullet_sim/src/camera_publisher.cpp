@@ -82,8 +82,8 @@ void CameraPublisher::afterStep(const ros::Time& now) {
     renderer_.render(world_, model_.linkPose(config_.link) * config_.pose, config_, frame_);
     for (const std::string& warning : renderer_.takeWarnings())
       ROS_WARN_STREAM("model '" << model_.name() << "', camera '" << config_.name << "': " << warning);
-    if (noise_) noise_->apply(frame_);
-    encodeImage(frame_, config_.encoding, image_.data);
+    encodeImage(frame_, config_.encoding, image_.data);  // a copy, or mono8's conversion
+    if (noise_) noise_->apply(image_.data);
     image_.header.stamp = now;
     image_publisher_.publish(image_);
   }

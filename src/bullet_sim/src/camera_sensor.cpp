@@ -483,7 +483,7 @@ struct ScreenTriangle {
   double wa, wb, wc;
   double sa, sb, sc, ta, tb, tc;
   int x0, x1, y0, y1;  // bounding box, clamped to the image
-  std::uint8_t rgb[3];
+  std::uint8_t rgb[3];             // flat colour, already in the output's channel order
   const Texture::Level* texture;  // when set, texture colour * shade replaces rgb
   float shade;
 };
@@ -497,7 +497,8 @@ void affine(const double u[3], const double v[3], double area2, double f0, doubl
   c = f0 - a * u[0] - b * v[0];
 }
 
-inline void sampleBilinear(const Texture::Level& t, double s, double tt, float shade, std::uint8_t* out) {
+// Writes the texel colour at (s, t), times shade, to out[r], out[1], out[2 - r] (r = 2 for bgr8).
+inline void sampleBilinear(const Texture::Level& t, double s, double tt, float shade, int r, std::uint8_t* out) {
   const float x = std::clamp(static_cast<float>(s * t.width - 0.5), 0.0f, static_cast<float>(t.width - 1));
   const float y = std::clamp(static_cast<float>(tt * t.height - 0.5), 0.0f, static_cast<float>(t.height - 1));
   const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
@@ -509,12 +510,13 @@ inline void sampleBilinear(const Texture::Level& t, double s, double tt, float s
   const std::uint8_t* p11 = &t.rgb[(static_cast<size_t>(y1) * t.width + x1) * 3];
   for (int ch = 0; ch < 3; ++ch) {
     const float top = p00[ch] + fx * (p10[ch] - p00[ch]), bottom = p01[ch] + fx * (p11[ch] - p01[ch]);
-    out[ch] = static_cast<std::uint8_t>(std::min(255.0f, (top + fy * (bottom - top)) * shade + 0.5f));
+    out[ch == 1 ? 1 : ch == 0 ? r : 2 - r] =
+        static_cast<std::uint8_t>(std::min(255.0f, (top + fy * (bottom - top)) * shade + 0.5f));
   }
 }
 
-// Fills the rows [row_begin, row_end) of one triangle.
-void fill(const ScreenTriangle& t, int row_begin, int row_end, int width, float* depth, std::uint8_t* rgb) {
+// Fills the rows [row_begin, row_end) of one triangle; r is where red goes (0, or 2 for bgr8).
+void fill(const ScreenTriangle& t, int row_begin, int row_end, int width, int r, float* depth, std::uint8_t* rgb) {
   const int y_end = std::min(t.y1 + 1, row_end);
   for (int y = std::max(t.y0, row_begin); y < y_end; ++y) {
     const double yc = y + 0.5;
@@ -546,7 +548,7 @@ void fill(const ScreenTriangle& t, int row_begin, int row_end, int width, float*
         const double xc = i + 0.5, w = t.wa * xc + w_row;
         if (static_cast<float>(w) <= d[i]) continue;
         d[i] = static_cast<float>(w);
-        sampleBilinear(*t.texture, (t.sa * xc + s_row) / w, (t.ta * xc + t_row) / w, t.shade, c + 3 * i);
+        sampleBilinear(*t.texture, (t.sa * xc + s_row) / w, (t.ta * xc + t_row) / w, t.shade, r, c + 3 * i);
       }
     }
   }
@@ -564,6 +566,7 @@ struct SceneRenderer::Impl {
 
   // Per frame.
   int width = 0, height = 0;
+  int red = 0;  // channel red is written to: 0 for rgb8, 2 for bgr8
   double f = 0, cx = 0, cy = 0, near = 0, far = 0;
   Vector3d to_sun;  // optical frame
   Eigen::Isometry3d optical_from_world;
@@ -600,6 +603,7 @@ struct SceneRenderer::Impl {
 
   void beginFrame(const Eigen::Isometry3d& camera_in_world, const CameraConfig& config, const RenderSettings& s) {
     width = config.width, height = config.height;
+    red = config.encoding == "bgr8" ? 2 : 0;
     f = width / (2.0 * std::tan(config.horizontal_fov / 2.0));
     cx = width / 2.0, cy = height / 2.0;
     near = config.near_clip, far = config.far_clip;
@@ -693,7 +697,8 @@ struct SceneRenderer::Impl {
     t.texture = nullptr;
     t.shade = shade;
     for (int ch = 0; ch < 3; ++ch)
-      t.rgb[ch] = static_cast<std::uint8_t>(std::lround(std::clamp(rgba[ch] * shade, 0.0f, 1.0f) * 255));
+      t.rgb[ch == 1 ? 1 : ch == 0 ? red : 2 - red] =
+          static_cast<std::uint8_t>(std::lround(std::clamp(rgba[ch] * shade, 0.0f, 1.0f) * 255));
     if (tex) {
       const Vector2d& a = v0.uv;
       const Vector2d& b = v1.uv;
@@ -710,13 +715,15 @@ struct SceneRenderer::Impl {
     triangles.push_back(t);
   }
 
-  void rasterize(const RenderSettings& s, RgbImage& out) {
+  void rasterize(const RenderSettings& s, CameraImage& out) {
     out.width = width, out.height = height;
+    out.encoding = red ? "bgr8" : "rgb8";
     const size_t row_bytes = static_cast<size_t>(width) * 3;
     out.data.resize(row_bytes * height);
     std::uint8_t bg[3];
     for (int ch = 0; ch < 3; ++ch)
-      bg[ch] = static_cast<std::uint8_t>(std::lround(std::clamp(s.background[ch], 0.0f, 1.0f) * 255));
+      bg[ch == 1 ? 1 : ch == 0 ? red : 2 - red] =
+          static_cast<std::uint8_t>(std::lround(std::clamp(s.background[ch], 0.0f, 1.0f) * 255));
     for (int x = 0; x < width; ++x) std::copy(bg, bg + 3, &out.data[3 * x]);
     for (int y = 1; y < height; ++y) std::copy_n(out.data.begin(), row_bytes, out.data.begin() + y * row_bytes);
     // Anything beyond the far plane has w < 1/far and fails the depth test.
@@ -726,7 +733,7 @@ struct SceneRenderer::Impl {
     auto band = [&](int b) {
       const int y0 = height * b / bands, y1 = height * (b + 1) / bands;
       for (const ScreenTriangle& t : triangles)
-        if (t.y1 >= y0 && t.y0 < y1) fill(t, y0, y1, width, depth.data(), out.data.data());
+        if (t.y1 >= y0 && t.y0 < y1) fill(t, y0, y1, width, red, depth.data(), out.data.data());
     };
     std::vector<std::thread> workers;
     for (int b = 1; b < bands; ++b) workers.emplace_back(band, b);
@@ -757,12 +764,12 @@ std::vector<SceneItem> SceneRenderer::collect(const PhysicsWorld& world) {
 }
 
 void SceneRenderer::render(const PhysicsWorld& world, const Eigen::Isometry3d& camera_in_world,
-                           const CameraConfig& config, RgbImage& out) {
+                           const CameraConfig& config, CameraImage& out) {
   render(collect(world), camera_in_world, config, out);
 }
 
 void SceneRenderer::render(const std::vector<SceneItem>& items, const Eigen::Isometry3d& camera_in_world,
-                           const CameraConfig& config, RgbImage& out) {
+                           const CameraConfig& config, CameraImage& out) {
   impl_->beginFrame(camera_in_world, config, settings_);
   for (const SceneItem& item : items)
     if (item.visual) impl_->addVisual(*item.visual, item.pose, settings_);
@@ -779,33 +786,39 @@ std::vector<std::string> SceneRenderer::takeWarnings() {
 // Noise and encodings
 // ---------------------------------------------------------------------------------------------
 
-ImageNoise::ImageNoise(double mean, double stddev, std::uint64_t seed) : table_(65536), state_(seed | 1) {
-  std::mt19937_64 gen(seed);
-  std::normal_distribution<double> normal(0.0, 1.0);
-  for (std::int16_t& v : table_) v = static_cast<std::int16_t>(std::clamp(std::lround(255 * (mean + stddev * normal(gen))), -255L, 255L));
-}
+ImageNoise::ImageNoise(double mean, double stddev, std::uint64_t seed) : mean_(mean), stddev_(stddev), rng_(seed) {}
 
-void ImageNoise::apply(RgbImage& image) {
-  std::uint8_t* p = image.data.data();
-  const size_t n = image.data.size();
-  for (size_t i = 0; i < n;) {
-    state_ ^= state_ << 13, state_ ^= state_ >> 7, state_ ^= state_ << 17;  // xorshift64
-    std::uint64_t r = state_;
-    for (int k = 0; k < 4 && i < n; ++k, ++i, r >>= 16) p[i] = static_cast<std::uint8_t>(std::clamp(p[i] + table_[r & 0xFFFF], 0, 255));
+void ImageNoise::apply(std::vector<std::uint8_t>& bytes) {
+  constexpr size_t kOffsets = 65536;
+  if (pattern_.size() < bytes.size() + kOffsets) {
+    std::normal_distribution<double> normal(0.0, 1.0);
+    pattern_.resize(bytes.size() + kOffsets);
+    for (std::int16_t& v : pattern_)
+      v = static_cast<std::int16_t>(std::clamp(std::lround(255 * (mean_ + stddev_ * normal(rng_))), -255L, 255L));
+  }
+  const std::int16_t* __restrict noise = pattern_.data() + rng_() % kOffsets;
+  std::uint8_t* __restrict p = bytes.data();
+  for (size_t i = 0, n = bytes.size(); i < n; ++i) {  // vectorizes
+    const int v = p[i] + noise[i];
+    p[i] = static_cast<std::uint8_t>(v < 0 ? 0 : v > 255 ? 255 : v);
   }
 }
 
-void encodeImage(const RgbImage& image, const std::string& encoding, std::vector<std::uint8_t>& out) {
+void encodeImage(const CameraImage& image, const std::string& encoding, std::vector<std::uint8_t>& out) {
   const size_t pixels = static_cast<size_t>(image.width) * image.height;
-  const std::uint8_t* p = image.data.data();
+  const std::uint8_t* __restrict in = image.data.data();
+  const int r = image.encoding == "bgr8" ? 2 : 0, b = 2 - r;  // where red and blue are in `image`
   if (encoding == "mono8") {
     out.resize(pixels);
-    for (size_t i = 0; i < pixels; ++i, p += 3) out[i] = static_cast<std::uint8_t>((77 * p[0] + 150 * p[1] + 29 * p[2] + 128) >> 8);
-  } else if (encoding == "bgr8") {
-    out.resize(pixels * 3);
-    for (size_t i = 0; i < pixels; ++i, p += 3) out[3 * i] = p[2], out[3 * i + 1] = p[1], out[3 * i + 2] = p[0];
-  } else {
+    std::uint8_t* __restrict o = out.data();
+    for (size_t i = 0; i < pixels; ++i)
+      o[i] = static_cast<std::uint8_t>((77 * in[3 * i + r] + 150 * in[3 * i + 1] + 29 * in[3 * i + b] + 128) >> 8);
+  } else if (encoding == image.encoding) {
     out.assign(image.data.begin(), image.data.end());
+  } else {  // rgb8 <-> bgr8
+    out.resize(pixels * 3);
+    std::uint8_t* __restrict o = out.data();
+    for (size_t i = 0; i < 3 * pixels; i += 3) o[i] = in[i + 2], o[i + 1] = in[i + 1], o[i + 2] = in[i];
   }
 }
 

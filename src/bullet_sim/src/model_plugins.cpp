@@ -2,7 +2,9 @@
 
 #include <ros/console.h>
 
+#include "bullet_sim/camera_publisher.h"
 #include "bullet_sim/description_error.h"
+#include "bullet_sim/drive_plugins.h"
 #include "bullet_sim/laser_publisher.h"
 #include "bullet_sim/ros_control_plugin.h"
 
@@ -23,6 +25,21 @@ std::vector<std::unique_ptr<ModelPlugin>> makeModelPlugins(PhysicsWorld& world, 
     }
     plugins.push_back(std::make_unique<LaserPublisher>(laser, world, model, robot_namespace));
   }
+  for (const CameraConfig& camera : parseCameraSensors(description.extensions, description.source)) {
+    if (!model.hasLink(camera.link))
+      throw DescriptionError(description.source + ": <gazebo reference='" + camera.link + "'>/<sensor name='" +
+                             camera.name + "'>: expected the name of a link of model '" + model.name() + "'");
+    if (camera.plugin_filename.empty()) {
+      ROS_WARN_STREAM("model '" << model.name() << "': camera sensor '" << camera.name
+                                << "' has no libgazebo_ros_camera.so plugin, so nothing is published for it");
+      continue;
+    }
+    plugins.push_back(std::make_unique<CameraPublisher>(camera, world, model, robot_namespace));
+  }
+  if (const auto diff_drive = parseDiffDrive(description))
+    plugins.push_back(std::make_unique<DiffDrivePlugin>(model, *diff_drive, robot_namespace));
+  if (const auto skid_steer = parseSkidSteerDrive(description))
+    plugins.push_back(std::make_unique<SkidSteerDrivePlugin>(model, *skid_steer, robot_namespace));
   RosControlConfig ros_control;
   if (findRosControlPlugin(description, ros_control))
     plugins.push_back(std::make_unique<RosControlPlugin>(model, ros_control, world.settings().max_step_size));

@@ -229,8 +229,8 @@ CameraConfig camera() {
 struct Rgb {
   int r, g, b;
 };
-Rgb px(const RgbImage& im, int x, int y) {
-  const std::uint8_t* p = im.pixel(x, y);
+Rgb px(const CameraImage& im, int x, int y) {
+  const auto p = im.rgb(x, y);
   return {p[0], p[1], p[2]};
 }
 bool isRed(Rgb c) { return c.r > 60 && c.r > 3 * c.g && c.r > 3 * c.b; }
@@ -240,14 +240,14 @@ bool isYellow(Rgb c) { return c.r > 60 && c.g > 60 && c.r > 3 * c.b && c.g > 3 *
 
 // Columns of row y (or rows of column x) where `pred` holds: the first one and how many.
 template <class Pred>
-std::pair<int, int> runInRow(const RgbImage& im, int y, Pred pred) {
+std::pair<int, int> runInRow(const CameraImage& im, int y, Pred pred) {
   int first = -1, count = 0;
   for (int x = 0; x < im.width; ++x)
     if (pred(px(im, x, y))) first = first < 0 ? x : first, ++count;
   return {first, count};
 }
 template <class Pred>
-std::pair<int, int> runInColumn(const RgbImage& im, int x, Pred pred) {
+std::pair<int, int> runInColumn(const CameraImage& im, int x, Pred pred) {
   int first = -1, count = 0;
   for (int y = 0; y < im.height; ++y)
     if (pred(px(im, x, y))) first = first < 0 ? y : first, ++count;
@@ -256,8 +256,8 @@ std::pair<int, int> runInColumn(const RgbImage& im, int x, Pred pred) {
 
 class RenderTest : public ::testing::Test {
  protected:
-  RgbImage render(const std::vector<SceneItem>& items, const Eigen::Isometry3d& cam, const CameraConfig& c = camera()) {
-    RgbImage im;
+  CameraImage render(const std::vector<SceneItem>& items, const Eigen::Isometry3d& cam, const CameraConfig& c = camera()) {
+    CameraImage im;
     renderer_.render(items, cam, c, im);
     return im;
   }
@@ -310,7 +310,6 @@ TEST_F(RenderTest, OrientationFollowsTheSensorFrame) {
   // Turning the camera left (yaw > 0) moves what is ahead to the right of the image...
   im = render({{&red_box_, at(3, 0, 0.5)}}, at(0, 0, 0.5, 0.2));
   std::tie(x0, w) = runInRow(im, 100, isRed);
-  EXPECT_GT(x0, 100);
   EXPECT_NEAR(x0 + w / 2.0, 100 + 100 * std::tan(0.2), 3);
   // ...a quarter turn loses it, and pitching down (pitch > 0 about y) raises the horizon.
   im = render({{&red_box_, at(3, 0, 0.5)}}, at(0, 0, 0.5, kPi / 2));
@@ -326,7 +325,9 @@ TEST_F(RenderTest, NearerHidesFartherWhateverTheOrder) {
   const auto a = render({{&red_box_, at(3, 0, 0.5)}, {&big_green, at(6, 0, 0.5)}}, at(0, 0, 0.5));
   const auto b = render({{&big_green, at(6, 0, 0.5)}, {&red_box_, at(3, 0, 0.5)}}, at(0, 0, 0.5));
   EXPECT_TRUE(isRed(px(a, 100, 100)));
-  EXPECT_TRUE(isGreen(px(a, 100, 70)));  // above the red box, the green one behind
+  // The green box's front face (at 5.5 m) spans 100 +- 27 px, the red one's 100 +- 20 px.
+  EXPECT_TRUE(isGreen(px(a, 100, 76)));
+  EXPECT_TRUE(isGreen(px(a, 100, 124)));
   EXPECT_EQ(a.data, b.data);
 }
 
@@ -440,29 +441,35 @@ TEST(CameraWorld, RendersTheVisualsOfAPhysicsWorld) {
   m.links.push_back(link);
   world.addModel(m, at(3, 0, 0));
   SceneRenderer renderer;
-  RgbImage im;
+  CameraImage im;
   renderer.render(world, at(0, 0, 0.5), camera(), im);
   EXPECT_TRUE(isRed(px(im, 100, 100)));
   EXPECT_NEAR(runInColumn(im, 100, isRed).second, 40, 2);
 }
 
 TEST(CameraImage, NoiseIsRepeatableAndHasItsSpread) {
-  RgbImage a;
-  a.width = 100, a.height = 100;
-  a.data.assign(100 * 100 * 3, 128);
-  RgbImage b = a;
-  ImageNoise(0, 0.02, 7).apply(a);
-  ImageNoise(0, 0.02, 7).apply(b);
-  EXPECT_EQ(a.data, b.data);
+  std::vector<std::uint8_t> a(100 * 100 * 3, 128), b = a, first;
+  ImageNoise noise_a(0, 0.02, 7), noise_b(0, 0.02, 7);
+  noise_a.apply(a);
+  noise_b.apply(b);
+  EXPECT_EQ(a, b);
   double sum = 0, sum2 = 0;
-  for (std::uint8_t v : a.data) sum += v - 128, sum2 += (v - 128.0) * (v - 128.0);
-  const double n = a.data.size(), mean = sum / n;
+  for (std::uint8_t v : a) sum += v - 128, sum2 += (v - 128.0) * (v - 128.0);
+  const double n = a.size(), mean = sum / n;
   EXPECT_NEAR(mean, 0, 0.1);
   EXPECT_NEAR(std::sqrt(sum2 / n - mean * mean), 0.02 * 255, 0.2);
+  // The next frame's noise is different, and clamped at the ends of the range.
+  first = a;
+  a.assign(a.size(), 128);
+  noise_a.apply(a);
+  EXPECT_NE(a, first);
+  std::vector<std::uint8_t> white(1000, 255);
+  ImageNoise(0.5, 0, 1).apply(white);
+  EXPECT_EQ(white, std::vector<std::uint8_t>(1000, 255));
 }
 
 TEST(CameraImage, Encodings) {
-  RgbImage im;
+  CameraImage im;
   im.width = 1, im.height = 1;
   im.data = {200, 100, 10};
   std::vector<std::uint8_t> out;
@@ -473,6 +480,26 @@ TEST(CameraImage, Encodings) {
   encodeImage(im, "mono8", out);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_NEAR(out[0], 0.299 * 200 + 0.587 * 100 + 0.114 * 10, 1);
+  im.encoding = "bgr8";  // the same bytes read as blue 200, red 10
+  encodeImage(im, "rgb8", out);
+  EXPECT_EQ(out, (std::vector<std::uint8_t>{10, 100, 200}));
+  encodeImage(im, "mono8", out);
+  EXPECT_NEAR(out[0], 0.299 * 10 + 0.587 * 100 + 0.114 * 200, 1);
+}
+
+TEST_F(RenderTest, RendersStraightIntoBgrOrder) {
+  VisualShape panel = box(0.02, 1, 1, {{1, 1, 1, 1}});
+  panel.texture_file = quadrantTexture();
+  const std::vector<SceneItem> scene = {{&ground_, Eigen::Isometry3d::Identity()}, {&panel, at(2, 0, 0.5)},
+                                        {&red_box_, at(4, 1.5, 0.5)}};
+  CameraConfig c = camera();
+  const CameraImage rgb = render(scene, at(0, 0, 0.5), c);
+  c.encoding = "bgr8";
+  const CameraImage bgr = render(scene, at(0, 0, 0.5), c);
+  EXPECT_EQ(bgr.encoding, "bgr8");
+  std::vector<std::uint8_t> converted;
+  encodeImage(rgb, "bgr8", converted);
+  EXPECT_EQ(bgr.data, converted);
 }
 
 }  // namespace

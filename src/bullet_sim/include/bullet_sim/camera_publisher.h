@@ -30,7 +30,7 @@ class CameraPublisher : public ModelPlugin {
   const PhysicsModel& model_;
   SceneRenderer renderer_;
   std::unique_ptr<ImageNoise> noise_;  // null without noise
-  RgbImage frame_;
+  CameraImage frame_;  // rendered in the message encoding's channel order (rgb for mono8)
   ros::NodeHandle node_;
   ros::Publisher image_publisher_;
   ros::Publisher info_publisher_;

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -83,12 +84,18 @@ struct CameraIntrinsics {
 };
 CameraIntrinsics cameraIntrinsics(const CameraConfig& config);
 
-// 8-bit RGB, rows top to bottom, pixels left to right (sensor_msgs "rgb8" layout).
-struct RgbImage {
+// 8-bit colour pixels as sensor_msgs/Image lays them out: rows top to bottom, pixels left to
+// right, channels in the order `encoding` says ("rgb8" or "bgr8").
+struct CameraImage {
   int width = 0;
   int height = 0;
+  std::string encoding = "rgb8";
   std::vector<std::uint8_t> data;  // width * height * 3
-  const std::uint8_t* pixel(int x, int y) const { return &data[(static_cast<size_t>(y) * width + x) * 3]; }
+  std::array<std::uint8_t, 3> rgb(int x, int y) const {  // whatever the order
+    const std::uint8_t* p = &data[(static_cast<size_t>(y) * width + x) * 3];
+    return encoding == "bgr8" ? std::array<std::uint8_t, 3>{{p[2], p[1], p[0]}}
+                              : std::array<std::uint8_t, 3>{{p[0], p[1], p[2]}};
+  }
 };
 
 // Light and background. Defaults are Gazebo's empty world: <scene> ambient 0.4 and background
@@ -126,11 +133,12 @@ class SceneRenderer {
   SceneRenderer& operator=(const SceneRenderer&) = delete;
 
   // What a camera whose sensor frame is at `camera_in_world` sees of every visual of every model.
-  // Only config's horizontal_fov, width, height, near_clip and far_clip are used.
+  // Uses config's horizontal_fov, width, height, near_clip, far_clip, and encoding: the pixels come
+  // out in bgr8 order for "bgr8" (saving a conversion), else in rgb8 order.
   void render(const PhysicsWorld& world, const Eigen::Isometry3d& camera_in_world, const CameraConfig& config,
-              RgbImage& out);
+              CameraImage& out);
   void render(const std::vector<SceneItem>& items, const Eigen::Isometry3d& camera_in_world,
-              const CameraConfig& config, RgbImage& out);
+              const CameraConfig& config, CameraImage& out);
   // The visuals of every model at their links' current poses (valid until a model changes).
   static std::vector<SceneItem> collect(const PhysicsWorld& world);
 
@@ -145,20 +153,22 @@ class SceneRenderer {
 };
 
 // Gazebo's gaussian image noise on 8-bit values: value + round(255 * (mean + stddev * N(0, 1))),
-// clamped, independently per channel. Draws from a table of 65536 normal samples made from `seed`
-// with a xorshift generator (std::normal_distribution would cost ~30 ms per 800x800 frame); the
-// same seed gives the same sequence of frames.
+// clamped, independently per byte (so per channel). Drawing 2.4 million normal samples per
+// 800x800 frame would cost more than rendering it, so one pattern of (bytes + 65536) samples is
+// drawn once from `seed`, and each frame adds it from a fresh random offset: every frame's noise
+// is i.i.d. with the right mean and spread, and the same seed gives the same frames.
 class ImageNoise {
  public:
   ImageNoise(double mean, double stddev, std::uint64_t seed);
-  void apply(RgbImage& image);
+  void apply(std::vector<std::uint8_t>& bytes);
 
  private:
-  std::vector<std::int16_t> table_;
-  std::uint64_t state_;
+  double mean_, stddev_;
+  std::mt19937_64 rng_;
+  std::vector<std::int16_t> pattern_;
 };
 
-// The pixels in a sensor_msgs encoding: "rgb8" as is, "bgr8" swapped, "mono8" as luma (Rec. 601).
-void encodeImage(const RgbImage& image, const std::string& encoding, std::vector<std::uint8_t>& out);
+// The pixels in a sensor_msgs encoding: "rgb8", "bgr8", or "mono8" (luma, Rec. 601).
+void encodeImage(const CameraImage& image, const std::string& encoding, std::vector<std::uint8_t>& out);
 
 }  // namespace bullet_sim

@@ -1,7 +1,9 @@
 """Ground-truth laser ranges in a 2D world of box walls (pure Python, no ROS).
 
 A wall is a box seen from above: centre (x, y), size (sx, sy) and yaw. Mazes list theirs in a
-yaml file ({walls: [{x, y, sx, sy, yaw}, ...]}) that matches their model.sdf."""
+yaml file that matches their model.sdf: {walls: [{x, y, size_x, size_y, yaw}, ...]} (sx, sy
+also accepted), in the world frame, or in the model frame with the model's world pose given as
+model_pose_in_world: {x, y, yaw}."""
 import math
 
 import yaml
@@ -31,9 +33,18 @@ class Wall:
 
 
 def load_walls(path):
+    """The walls of a maze yaml, in the world frame."""
     with open(path) as f:
         data = yaml.safe_load(f)
-    return [Wall(w['x'], w['y'], w['sx'], w['sy'], w.get('yaw', 0.0)) for w in data['walls']]
+    pose = data.get('model_pose_in_world', {})
+    mx, my, myaw = pose.get('x', 0.0), pose.get('y', 0.0), pose.get('yaw', 0.0)
+    c, s = math.cos(myaw), math.sin(myaw)
+    walls = []
+    for w in data['walls']:
+        sx, sy = w.get('size_x', w.get('sx')), w.get('size_y', w.get('sy'))
+        walls.append(Wall(mx + c * w['x'] - s * w['y'], my + s * w['x'] + c * w['y'], sx, sy,
+                          myaw + w.get('yaw', 0.0)))
+    return walls
 
 
 def nearest_wall(walls, x, y, heading):

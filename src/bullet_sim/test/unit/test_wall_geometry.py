@@ -4,7 +4,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', '..', 'src'))
-from bullet_sim_testing.walls import Wall, compare_scan, expected_range  # noqa: E402
+from bullet_sim_testing.walls import Wall, compare_scan, expected_range, load_walls  # noqa: E402
 
 
 def test_ray_hits_the_near_face_of_an_axis_aligned_wall():
@@ -43,3 +43,18 @@ def test_compare_scan_flags_a_wrong_beam_and_checks_out_of_range():
     scan.ranges[3] = 3.9
     _, _, failures = compare_scan(walls, 0, 0, 0, scan, 0.01)
     assert [f[0] for f in failures] == [1, 3]
+
+
+def test_load_walls_puts_model_frame_walls_into_the_world(tmp_path):
+    path = tmp_path / 'maze.yaml'
+    path.write_text('model_pose_in_world: {x: 1.0, y: 2.0, yaw: 1.5707963267948966}\n'
+                    'walls:\n'
+                    '  - {x: 1.0, y: 0.0, size_x: 2.0, size_y: 0.1, yaw: 0.0}\n'
+                    '  - {x: 0.0, y: 0.0, sx: 0.5, sy: 0.5}\n')
+    wall, post = load_walls(str(path))
+    assert (round(wall.x, 9), round(wall.y, 9)) == (1.0, 3.0)  # model +x is world +y
+    assert math.isclose(wall.yaw, math.pi / 2)
+    assert (wall.sx, wall.sy) == (2.0, 0.1)
+    assert (post.x, post.y, post.sx) == (1.0, 2.0, 0.5)
+    # The rotated wall runs along world y from 2 to 4, x 0.95..1.05.
+    assert math.isclose(expected_range([wall], 0.0, 3.0, 0.0), 0.95)
