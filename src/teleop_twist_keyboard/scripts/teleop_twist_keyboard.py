@@ -1,0 +1,1 @@
+teleop_twist_keyboard
