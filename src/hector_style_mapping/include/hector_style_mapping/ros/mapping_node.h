@@ -1,0 +1,85 @@
+#ifndef HECTOR_STYLE_MAPPING_ROS_MAPPING_NODE_H
+#define HECTOR_STYLE_MAPPING_ROS_MAPPING_NODE_H
+
+#include <memory>
+#include <string>
+
+#include <geometry_msgs/PoseWithCovarianceStamped.h>
+#include <geometry_msgs/TransformStamped.h>
+#include <nav_msgs/GetMap.h>
+#include <nav_msgs/Path.h>
+#include <ros/ros.h>
+#include <sensor_msgs/LaserScan.h>
+#include <std_msgs/String.h>
+#include <std_srvs/Trigger.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <tf2_ros/transform_listener.h>
+
+#include "hector_style_mapping/ros/node_options.h"
+#include "hector_style_mapping/slam_processor.h"
+
+namespace hector_style_mapping {
+
+// Per-scan processing time (conversion + matching + map update + pose output), wall clock.
+struct ScanTiming {
+  long scans = 0;
+  double total_ms = 0.0;
+  double max_ms = 0.0;
+  void add(double ms);
+  double meanMs() const { return scans ? total_ms / scans : 0.0; }
+};
+
+// hector_mapping's ROS interface around SlamProcessor (topics, tf, services: see the package README).
+class MappingNode {
+ public:
+  // Throws std::invalid_argument, naming every bad parameter, when the configuration cannot be used.
+  MappingNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
+  ~MappingNode();  // logs the timing summary
+
+  const ScanTiming& timing() const { return timing_; }
+
+ private:
+  void scanCallback(const sensor_msgs::LaserScan::ConstPtr& scan);
+  void sysCommandCallback(const std_msgs::String::ConstPtr& command);
+  void initialPoseCallback(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& pose);
+  bool dynamicMapService(nav_msgs::GetMap::Request& request, nav_msgs::GetMap::Response& response);
+  bool resetMapService(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
+  void publishMap();
+  void republishMapTransform();
+
+  // Where the laser of `scan` is in the base frame at its stamp; false (and a warning) when tf cannot say.
+  bool laserInBase(const sensor_msgs::LaserScan& scan, Eigen::Isometry3d* laser_in_base);
+  // False for a scan to drop because of its stamp (older than the last, or a duplicate).
+  bool acceptStamp(const ros::Time& stamp);
+  void publishPose(const ros::Time& stamp);
+  void publishMapTransform(const ros::Time& stamp);
+  void appendTrajectory(const ros::Time& stamp);
+  void reset(const std::string& why);
+
+  NodeOptions options_;
+  ros::NodeHandle nh_, private_nh_;
+  SlamProcessor slam_;
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_;
+  tf2_ros::TransformBroadcaster tf_broadcaster_;
+
+  ros::Subscriber scan_subscriber_, sys_command_subscriber_, initial_pose_subscriber_;
+  ros::Publisher map_publisher_, map_metadata_publisher_, pose_publisher_, pose_update_publisher_;
+  ros::Publisher odometry_publisher_, trajectory_publisher_;
+  ros::ServiceServer dynamic_map_service_, reset_map_service_;
+  ros::WallTimer map_timer_, transform_timer_;
+
+  ros::Time last_scan_stamp_;
+  bool have_initial_pose_ = false;
+  Pose2D initial_pose_;
+  geometry_msgs::TransformStamped map_transform_;  // the last map -> odom (or -> base) sent
+  bool have_map_transform_ = false;
+  nav_msgs::Path trajectory_;
+  ScanPoints scan_points_;  // reused: no allocation per scan
+  ScanTiming timing_;
+};
+
+}  // namespace hector_style_mapping
+
+#endif  // HECTOR_STYLE_MAPPING_ROS_MAPPING_NODE_H

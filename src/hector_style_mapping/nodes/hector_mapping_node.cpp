@@ -1,0 +1,22 @@
+// hector_mapping's node: `rosrun hector_style_mapping hector_mapping` (or `rosrun hector_mapping hector_mapping`).
+#include <memory>
+#include <stdexcept>
+
+#include <ros/ros.h>
+
+#include "hector_style_mapping/ros/mapping_node.h"
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "hector_mapping");
+  ros::NodeHandle nh;
+  ros::NodeHandle private_nh("~");
+  std::unique_ptr<hector_style_mapping::MappingNode> node;
+  try {
+    node = std::make_unique<hector_style_mapping::MappingNode>(nh, private_nh);
+  } catch (const std::invalid_argument& e) {
+    ROS_FATAL("hector_mapping: cannot start with these parameters:\n%s", e.what());
+    return 1;
+  }
+  ros::spin();
+  return 0;
+}

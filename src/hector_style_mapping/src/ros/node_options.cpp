@@ -1,0 +1,165 @@
+#include "hector_style_mapping/ros/node_options.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <ros/console.h>
+#include <xmlrpcpp/XmlRpcValue.h>
+
+namespace hector_style_mapping {
+namespace {
+
+// hector_mapping parameters that are accepted and ignored: debugging aids of upstream's.
+const char* const kIgnoredParameters[] = {"pub_drawings", "pub_debug_output"};
+
+const char* typeName(const XmlRpc::XmlRpcValue& value) {
+  switch (value.getType()) {
+    case XmlRpc::XmlRpcValue::TypeBoolean: return "a bool";
+    case XmlRpc::XmlRpcValue::TypeInt: return "an int";
+    case XmlRpc::XmlRpcValue::TypeDouble: return "a double";
+    case XmlRpc::XmlRpcValue::TypeString: return "a string";
+    case XmlRpc::XmlRpcValue::TypeArray: return "a list";
+    case XmlRpc::XmlRpcValue::TypeStruct: return "a dictionary";
+    default: return "something else";
+  }
+}
+
+// Reads typed private parameters, keeping their names (for unknownParameters) and the problems found.
+class ParameterReader {
+ public:
+  explicit ParameterReader(const ros::NodeHandle& nh) : nh_(nh) {}
+
+  void read(const std::string& name, double* value) {
+    XmlRpc::XmlRpcValue raw;
+    if (!fetch(name, &raw)) return;
+    if (raw.getType() == XmlRpc::XmlRpcValue::TypeDouble) *value = static_cast<double>(raw);
+    else if (raw.getType() == XmlRpc::XmlRpcValue::TypeInt) *value = static_cast<int>(raw);
+    else wrongType(name, "a number", raw);
+  }
+  void read(const std::string& name, int* value) {
+    XmlRpc::XmlRpcValue raw;
+    if (!fetch(name, &raw)) return;
+    if (raw.getType() == XmlRpc::XmlRpcValue::TypeInt) {
+      *value = static_cast<int>(raw);
+    } else if (raw.getType() == XmlRpc::XmlRpcValue::TypeDouble &&
+               static_cast<double>(raw) == std::floor(static_cast<double>(raw))) {
+      *value = static_cast<int>(static_cast<double>(raw));  // 200.0 is taken as 200
+    } else {
+      wrongType(name, "an integer", raw);
+    }
+  }
+  void read(const std::string& name, bool* value) {
+    XmlRpc::XmlRpcValue raw;
+    if (!fetch(name, &raw)) return;
+    if (raw.getType() == XmlRpc::XmlRpcValue::TypeBoolean) *value = static_cast<bool>(raw);
+    else wrongType(name, "true or false", raw);
+  }
+  void read(const std::string& name, std::string* value) {
+    XmlRpc::XmlRpcValue raw;
+    if (!fetch(name, &raw)) return;
+    if (raw.getType() == XmlRpc::XmlRpcValue::TypeString) *value = static_cast<std::string>(raw);
+    else wrongType(name, "a string", raw);
+  }
+
+  const std::vector<std::string>& names() const { return names_; }
+  std::string problems() const { return problems_.str(); }
+  void problem(const std::string& text) { problems_ << text << "\n"; }
+
+ private:
+  bool fetch(const std::string& name, XmlRpc::XmlRpcValue* raw) {
+    names_.push_back(name);
+    return nh_.getParam(name, *raw);
+  }
+  void wrongType(const std::string& name, const char* expected, XmlRpc::XmlRpcValue& raw) {
+    problems_ << nh_.resolveName(name) << ": expected " << expected << ", got " << typeName(raw) << " ("
+              << raw.toXml() << ")\n";
+  }
+
+  const ros::NodeHandle& nh_;
+  std::vector<std::string> names_;
+  std::ostringstream problems_;
+};
+
+// Reads every parameter into `o` (or, with o null, only records the names).
+void readAll(ParameterReader& r, NodeOptions* o) {
+  r.read("base_frame", &o->base_frame);
+  r.read("map_frame", &o->map_frame);
+  r.read("odom_frame", &o->odom_frame);
+  r.read("scan_topic", &o->scan_topic);
+  r.read("sys_msg_topic", &o->sys_msg_topic);
+  r.read("pose_update_topic", &o->pose_update_topic);
+  r.read("tf_map_scanmatch_transform_frame_name", &o->tf_map_scanmatch_transform_frame_name);
+  r.read("use_tf_scan_transformation", &o->use_tf_scan_transformation);
+  r.read("use_tf_pose_start_estimate", &o->use_tf_pose_start_estimate);
+  r.read("pub_map_odom_transform", &o->pub_map_odom_transform);
+  r.read("pub_map_scanmatch_transform", &o->pub_map_scanmatch_transform);
+  r.read("pub_odometry", &o->pub_odometry);
+  r.read("advertise_map_service", &o->advertise_map_service);
+  r.read("output_timing", &o->output_timing);
+  r.read("scan_subscriber_queue_size", &o->scan_subscriber_queue_size);
+  r.read("map_pub_period", &o->map_pub_period);
+  r.read("transform_pub_period", &o->transform_pub_period);
+  r.read("laser_min_dist", &o->filter.laser_min_dist);
+  r.read("laser_max_dist", &o->filter.laser_max_dist);
+  r.read("laser_z_min_value", &o->filter.laser_z_min_value);
+  r.read("laser_z_max_value", &o->filter.laser_z_max_value);
+  r.read("map_resolution", &o->mapper.map_resolution);
+  r.read("map_size", &o->mapper.map_size);
+  r.read("map_start_x", &o->mapper.map_start_x);
+  r.read("map_start_y", &o->mapper.map_start_y);
+  r.read("map_multi_res_levels", &o->mapper.map_multi_res_levels);
+  r.read("update_factor_free", &o->mapper.update_factor_free);
+  r.read("update_factor_occupied", &o->mapper.update_factor_occupied);
+  r.read("map_update_distance_thresh", &o->mapper.map_update_distance_thresh);
+  r.read("map_update_angle_thresh", &o->mapper.map_update_angle_thresh);
+}
+
+}  // namespace
+
+std::string loadNodeOptions(const ros::NodeHandle& private_nh, NodeOptions* options) {
+  ParameterReader reader(private_nh);
+  readAll(reader, options);
+  const std::string mapper_problems = validate(options->mapper);
+  if (!mapper_problems.empty()) reader.problem(mapper_problems);
+  const ScanFilter& f = options->filter;
+  if (!(f.laser_min_dist >= 0.0 && f.laser_min_dist < f.laser_max_dist))
+    reader.problem("laser_min_dist / laser_max_dist: expected 0 <= laser_min_dist < laser_max_dist (got " +
+                   std::to_string(f.laser_min_dist) + ", " + std::to_string(f.laser_max_dist) + ")");
+  if (!(f.laser_z_min_value < f.laser_z_max_value))
+    reader.problem("laser_z_min_value / laser_z_max_value: expected min < max (got " +
+                   std::to_string(f.laser_z_min_value) + ", " + std::to_string(f.laser_z_max_value) + ")");
+  if (options->scan_subscriber_queue_size < 1)
+    reader.problem("scan_subscriber_queue_size: expected >= 1 (got " +
+                   std::to_string(options->scan_subscriber_queue_size) + ")");
+  if (!(options->map_pub_period > 0.0))
+    reader.problem("map_pub_period: expected > 0 s (got " + std::to_string(options->map_pub_period) + ")");
+  if (!(options->transform_pub_period >= 0.0))
+    reader.problem("transform_pub_period: expected >= 0 s, 0 to publish only with each scan (got " +
+                   std::to_string(options->transform_pub_period) + ")");
+  for (const std::string* frame : {&options->base_frame, &options->map_frame, &options->odom_frame})
+    if (frame->empty()) reader.problem("base_frame, map_frame and odom_frame must not be empty");
+  if (options->map_frame == options->base_frame)
+    reader.problem("map_frame and base_frame are both '" + options->map_frame + "': expected two frames");
+  return reader.problems();
+}
+
+std::vector<std::string> unknownParameters(const ros::NodeHandle& private_nh) {
+  ParameterReader reader(private_nh);
+  NodeOptions scratch;
+  readAll(reader, &scratch);
+  std::vector<std::string> known = reader.names();
+  known.insert(known.end(), std::begin(kIgnoredParameters), std::end(kIgnoredParameters));
+  std::vector<std::string> all;
+  ros::NodeHandle("~").getParamNames(all);  // every parameter on the server
+  const std::string prefix = private_nh.getNamespace() + "/";
+  std::vector<std::string> unknown;
+  for (const std::string& name : all) {
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string local = name.substr(prefix.size());
+    if (std::find(known.begin(), known.end(), local) == known.end()) unknown.push_back(name);
+  }
+  return unknown;
+}
+
+}  // namespace hector_style_mapping
