@@ -31,6 +31,15 @@ class Wall:
             return None
         return max(t_near, 0.0)
 
+    def distance(self, px, py):
+        """Distance from (px, py) to the box's outline (inside or out), e.g. a map cell to the wall face."""
+        c, s = math.cos(self.yaw), math.sin(self.yaw)
+        u, v = c * (px - self.x) + s * (py - self.y), -s * (px - self.x) + c * (py - self.y)
+        du, dv = abs(u) - self.sx / 2, abs(v) - self.sy / 2
+        if du > 0 or dv > 0:
+            return math.hypot(max(du, 0.0), max(dv, 0.0))
+        return -max(du, dv)
+
 
 def load_walls(path):
     """The walls of a maze yaml, in the world frame."""

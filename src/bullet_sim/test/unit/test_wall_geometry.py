@@ -58,3 +58,10 @@ def test_load_walls_puts_model_frame_walls_into_the_world(tmp_path):
     assert (post.x, post.y, post.sx) == (1.0, 2.0, 0.5)
     # The rotated wall runs along world y from 2 to 4, x 0.95..1.05.
     assert math.isclose(expected_range([wall], 0.0, 3.0, 0.0), 0.95)
+
+
+def test_distance_to_a_wall_is_to_its_outline_from_outside_and_inside():
+    wall = Wall(0.0, 0.0, 2.0, 0.2, math.pi / 2)  # along y, x -0.1 .. 0.1
+    assert math.isclose(wall.distance(0.5, 0.0), 0.4)
+    assert math.isclose(wall.distance(0.05, 0.3), 0.05)   # inside, 5 cm from the face
+    assert math.isclose(wall.distance(0.4, 1.4), 0.5)     # off the corner: (0.3, 0.4)

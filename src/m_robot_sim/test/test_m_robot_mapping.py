@@ -1,0 +1,27 @@
+#!/usr/bin/env python3
+"""m_robot maps the Capstone maze with the lidar alone (m_robot_mapping.launch): driven along a
+scripted tour of all its rooms, the mapper's pose stays within 5 cm / 2 degrees of the ground truth
+(final and RMS), and the saved map's walls line up with the maze's."""
+import os
+import unittest
+
+import rostest
+from bullet_sim_testing.mapping import MappingRunChecks
+
+PACKAGE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+class MRobotMappingTest(MappingRunChecks, unittest.TestCase):
+    MODEL = 'm_robot'
+    CMD_VEL = '/cmd_vel'
+    WALLS = os.path.join(PACKAGE, 'config', 'capstone_map_walls.yaml')
+    LASER_RANGE = 6.0
+    SPEED = 0.25
+    # World frame; m_robot starts at the origin facing +x. Up the east side, west between the middle
+    # walls, through the gap into the north strip and along it, back, and down the west side.
+    WAYPOINTS = [(-0.1, 1.5), (-0.1, 3.1), (-1.0, 3.1), (-1.0, 4.0), (-2.0, 4.0), (0.0, 4.0), (-1.0, 4.0),
+                 (-1.0, 3.1), (-2.0, 3.1), (-2.0, 1.5), (-1.0, 0.5), (-0.3, 0.3)]
+
+
+if __name__ == '__main__':
+    rostest.rosrun('m_robot_sim', 'test_m_robot_mapping', MRobotMappingTest)
