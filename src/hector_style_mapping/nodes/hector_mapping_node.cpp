@@ -1,4 +1,5 @@
 // hector_mapping's node: `rosrun hector_style_mapping hector_mapping` (or `rosrun hector_mapping hector_mapping`).
+#include <cstdio>
 #include <memory>
 #include <stdexcept>
 
@@ -18,5 +19,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   ros::spin();
+  // rosconsole is down once spin() returns (ros::shutdown), hence plain stdout.
+  std::printf("hector_mapping: %s\n", node->timing().summary().c_str());
   return 0;
 }

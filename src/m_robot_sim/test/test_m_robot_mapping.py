@@ -16,11 +16,7 @@ class MRobotMappingTest(MappingRunChecks, unittest.TestCase):
     CMD_VEL = '/cmd_vel'
     WALLS = os.path.join(PACKAGE, 'config', 'capstone_map_walls.yaml')
     LASER_RANGE = 6.0
-    SPEED = 0.25
-    # World frame; m_robot starts at the origin facing +x. Up the east side, west between the middle
-    # walls, through the gap into the north strip and along it, back, and down the west side.
-    WAYPOINTS = [(-0.1, 1.5), (-0.1, 3.1), (-1.0, 3.1), (-1.0, 4.0), (-2.0, 4.0), (0.0, 4.0), (-1.0, 4.0),
-                 (-1.0, 3.1), (-2.0, 3.1), (-2.0, 1.5), (-1.0, 0.5), (-0.3, 0.3)]
+    TOUR = os.path.join(PACKAGE, 'config', 'mapping_tour.yaml')
 
 
 if __name__ == '__main__':

@@ -16,12 +16,7 @@ class PioneerMappingTest(MappingRunChecks, unittest.TestCase):
     CMD_VEL = '/pioneer/cmd_vel'
     WALLS = os.path.join(PACKAGE, 'config', 'pioneer_maze_walls.yaml')
     LASER_RANGE = 30.0
-    SPEED = 0.4
-    # Cell centres (config/pioneer_maze_walls.yaml's drawing), from the start cell (-3.2, -3.2):
-    # east along the south row, north up the middle, west and back down, up the west column to
-    # the north-west corner, east along the top row, then down into the east half.
-    WAYPOINTS = [(0.0, -3.2), (0.0, -1.6), (0.0, 0.0), (-1.6, 0.0), (-1.6, -1.6), (-3.2, -1.6), (-3.2, 3.2),
-                 (0.0, 3.2), (0.0, 1.6), (1.6, 1.6), (1.6, 0.0)]
+    TOUR = os.path.join(PACKAGE, 'config', 'mapping_tour.yaml')
 
 
 if __name__ == '__main__':

@@ -83,6 +83,36 @@ def map_alignment(walls, points, seen_from, max_range, tolerance=0.1, spacing=0.
     return precision, mean, (covered / len(visible) if visible else 0.0)
 
 
+def load_tour(path):
+    """(waypoints [(x, y)], speed m/s, max turn command rad/s) of a mapping_tour.yaml."""
+    import yaml
+    with open(path) as f:
+        tour = yaml.safe_load(f)
+    return [tuple(w) for w in tour['waypoints']], float(tour['speed']), float(tour['max_turn'])
+
+
+def follow_waypoints(truth_sample, cmd, waypoints, speed, max_turn, timeout):
+    """Drives through the waypoints with ground truth, turning on the spot when the heading is off by
+    more than 0.35 rad, else driving at `speed` steering towards the waypoint. truth_sample() returns
+    (stamp, x, y, yaw); cmd is the Twist publisher. Returns how many waypoints were reached."""
+    reached, end = 0, rospy.get_time() + timeout
+    rate = rospy.Rate(50)
+    for wx, wy in waypoints:
+        while rospy.get_time() < end and not rospy.is_shutdown():
+            _, x, y, yaw = truth_sample()
+            if math.hypot(wx - x, wy - y) < 0.08:
+                reached += 1
+                break
+            error = angle_diff(math.atan2(wy - y, wx - x), yaw)
+            twist = Twist()
+            twist.angular.z = max(-max_turn, min(max_turn, 3.0 * error))
+            twist.linear.x = speed if abs(error) < 0.35 else 0.0
+            cmd.publish(twist)
+            rate.sleep()
+    cmd.publish(Twist())
+    return reached
+
+
 def _outline(hx, hy):
     corners = [(-hx, -hy), (hx, -hy), (hx, hy), (-hx, hy)]
     return [(corners[i], corners[(i + 1) % 4]) for i in range(4)]
@@ -92,10 +122,8 @@ class MappingRunChecks:
     MODEL = None             # model name in the simulator
     CMD_VEL = None           # where the drive plugin takes geometry_msgs/Twist
     WALLS = None             # the maze's walls yaml (ground truth)
-    WAYPOINTS = ()           # the path, world frame (x, y)
+    TOUR = None              # the path: a mapping_tour.yaml (waypoints in the world frame, speed)
     LASER_RANGE = None       # m, for which wall faces the robot could have seen
-    SPEED = 0.3              # m/s on the straight
-    MAX_TURN_COMMAND = 1.5   # rad/s commanded when turning
     POSITION_LIMIT = 0.05    # m: final and RMS position error must stay under this
     ANGLE_LIMIT = math.radians(2.0)
     MIN_PRECISION = 0.9      # share of the map's occupied cells within 0.1 m of a wall
@@ -115,8 +143,8 @@ class MappingRunChecks:
         while not cls._have_slam_pose() and rospy.get_time() < deadline:
             rospy.sleep(0.1)
         cls.start = cls._truth_sample()[1:]  # at rest: where the map frame is
-        cls.reached = cls._drive()
-        cls.cmd.publish(Twist())
+        cls.waypoints, speed, max_turn = load_tour(cls.TOUR)
+        cls.reached = follow_waypoints(cls._truth_sample, cls.cmd, cls.waypoints, speed, max_turn, cls.RUN_TIMEOUT)
         rospy.sleep(1.5)                      # stop, and let the mapper see the robot at rest
         cls.final_truth = cls._truth_sample()
         deadline = rospy.get_time() + 10
@@ -150,26 +178,6 @@ class MappingRunChecks:
         cls.truth.append(sample)
         return sample
 
-    @classmethod
-    def _drive(cls):
-        """Follows the waypoints; returns how many were reached. Turns on the spot when the heading is
-        off by more than 0.35 rad, else drives at SPEED steering towards the waypoint."""
-        reached, end = 0, rospy.get_time() + cls.RUN_TIMEOUT
-        rate = rospy.Rate(50)
-        for wx, wy in cls.WAYPOINTS:
-            while rospy.get_time() < end and not rospy.is_shutdown():
-                _, x, y, yaw = cls._truth_sample()
-                if math.hypot(wx - x, wy - y) < 0.08:
-                    reached += 1
-                    break
-                error = angle_diff(math.atan2(wy - y, wx - x), yaw)
-                twist = Twist()
-                twist.angular.z = max(-cls.MAX_TURN_COMMAND, min(cls.MAX_TURN_COMMAND, 3.0 * error))
-                twist.linear.x = cls.SPEED if abs(error) < 0.35 else 0.0
-                cls.cmd.publish(twist)
-                rate.sleep()
-        return reached
-
     # --- what the run shows ------------------------------------------------------------------------
 
     def pose_errors(self):
@@ -187,8 +195,8 @@ class MappingRunChecks:
         return errors
 
     def test_the_path_was_driven(self):
-        self.assertEqual(self.reached, len(self.WAYPOINTS), 'reached %d of %d waypoints' %
-                         (self.reached, len(self.WAYPOINTS)))
+        self.assertEqual(self.reached, len(self.waypoints), 'reached %d of %d waypoints' %
+                         (self.reached, len(self.waypoints)))
 
     def test_final_pose_error(self):
         _, x, y, yaw = self._last_slam()

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include <geometry_msgs/PoseStamped.h>
@@ -64,6 +65,12 @@ void ScanTiming::add(double ms) {
   max_ms = std::max(max_ms, ms);
 }
 
+std::string ScanTiming::summary() const {
+  char text[128];
+  std::snprintf(text, sizeof text, "%ld scans processed, %.3f ms mean, %.3f ms max per scan", scans, meanMs(), max_ms);
+  return text;
+}
+
 MappingNode::MappingNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     : options_(loadOrThrow(private_nh)),
       nh_(nh),
@@ -103,11 +110,6 @@ MappingNode::MappingNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
            "scans on %s; tf %s -> %s%s", m.map_size, m.map_size, m.map_resolution, m.map_multi_res_levels,
            m.map_start_x, m.map_start_y, nh_.resolveName(options_.scan_topic).c_str(), options_.map_frame.c_str(),
            options_.odom_frame.c_str(), options_.pub_map_odom_transform ? "" : " (not published)");
-}
-
-MappingNode::~MappingNode() {
-  ROS_INFO("hector_mapping: %ld scans processed, %.3f ms mean, %.3f ms max per scan", timing_.scans,
-           timing_.meanMs(), timing_.max_ms);
 }
 
 bool MappingNode::acceptStamp(const ros::Time& stamp) {

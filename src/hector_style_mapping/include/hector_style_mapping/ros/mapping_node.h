@@ -28,6 +28,8 @@ struct ScanTiming {
   double max_ms = 0.0;
   void add(double ms);
   double meanMs() const { return scans ? total_ms / scans : 0.0; }
+  // "N scans processed, X ms mean, Y ms max per scan" (scripts/bench_mapping.py reads it).
+  std::string summary() const;
 };
 
 // hector_mapping's ROS interface around SlamProcessor (topics, tf, services: see the package README).
@@ -35,7 +37,6 @@ class MappingNode {
  public:
   // Throws std::invalid_argument, naming every bad parameter, when the configuration cannot be used.
   MappingNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
-  ~MappingNode();  // logs the timing summary
 
   const ScanTiming& timing() const { return timing_; }
 

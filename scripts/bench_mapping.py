@@ -1,0 +1,144 @@
+#!/usr/bin/python3
+"""The mapper's cost per scan (issue 5), in one run, live in the simulator and from a recorded bag.
+
+  bench_mapping.py [--robot m_robot|pioneer] [--save-maps DIR]
+
+For each robot (m_robot: 359-beam lidar at 5.5 Hz; Pioneer: 720-beam Hokuyo at 40 Hz), on a private
+roscore: its mapping launch file (simulator + mapper, headless), the tour of its maze that the
+mapping rostest drives (config/mapping_tour.yaml), and `rosbag record` of the scans and tf. The
+mapper logs its own per-scan time at shutdown (scan conversion + matching + map update + pose
+output, wall clock): that is the live figure. Then bench_mapping_bag runs the same code on the
+bag, with the mapper's parameters as the launch file set them, without simulator or master.
+With --save-maps, save_map writes DIR/<robot>_map.{pgm,yaml,png} at the end of the live run (the
+docs' pictures). Output lines (parsed by scripts/bench):
+  mapping per scan (<robot>, <beams> beams, live): mean X ms, max Y ms over N scans
+  mapping per scan (<robot>, <beams> beams, bag): mean X ms, max Y ms over N scans
+Run with Debian's /usr/bin/python3 and the workspace sourced (scripts/env.sh).
+"""
+import argparse
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+sys.path.insert(0, HERE)
+from bench_node_rtf import Processes, free_port, rosgraph_service_up, wait_until  # noqa: E402
+
+# name, mapping launch, model, cmd_vel, scan topic, base frame, tour
+ROBOTS = {
+    'm_robot': (['m_robot_sim', 'm_robot_mapping.launch'], 'm_robot', '/cmd_vel', '/m_robot/laser/scan',
+                'base_frame', 'src/m_robot_sim/config/mapping_tour.yaml'),
+    'pioneer': (['pioneer_sim', 'pioneer_mapping.launch'], 'pioneer', '/pioneer/cmd_vel', '/pioneer/laser/scan',
+                'base_link', 'src/pioneer_sim/config/mapping_tour.yaml'),
+}
+# The node's parameters bench_mapping_bag takes (the map and the beam filters).
+BAG_PARAMETERS = ('map_resolution', 'map_size', 'map_start_x', 'map_start_y', 'map_multi_res_levels',
+                  'update_factor_free', 'update_factor_occupied', 'map_update_distance_thresh',
+                  'map_update_angle_thresh', 'laser_min_dist', 'laser_max_dist', 'laser_z_min_value',
+                  'laser_z_max_value')
+SUMMARY = re.compile(r'hector_mapping: (\d+) scans processed, ([\d.]+) ms mean, ([\d.]+) ms max per scan')
+
+
+def bench(robot, procs, save_maps):
+    launch, model, cmd_vel, scan_topic, base_frame, tour = ROBOTS[robot]
+    port = free_port()
+    env = dict(os.environ, ROS_MASTER_URI='http://127.0.0.1:%d' % port, ROS_IP='127.0.0.1',
+               ROS_HOME=procs.log_dir, ROS_LOG_DIR=os.path.join(procs.log_dir, 'ros_log'))
+    env.pop('ROS_HOSTNAME', None)
+    os.environ.clear()
+    os.environ.update(env)
+    import rosgraph
+    import rospy
+    from gazebo_msgs.srv import GetModelState
+    from geometry_msgs.msg import Twist
+    from bullet_sim_testing.mapping import follow_waypoints, load_tour
+    from bullet_sim_testing.mobile import yaw_of
+
+    procs.start('roscore', ['roscore', '-p', str(port)], env)
+    master = rosgraph.Master('/bench_mapping', master_uri=env['ROS_MASTER_URI'])
+    wait_until(lambda: rosgraph_service_up(master, '/rosout/get_loggers'), 30, 'roscore', procs)
+    procs.start('launch', ['roslaunch'] + launch, env)
+    rospy.init_node('bench_mapping', anonymous=True, disable_signals=True)
+    wait_until(lambda: rosgraph_service_up(master, '/gazebo/get_model_state'), 90, '/gazebo/get_model_state', procs)
+    wait_until(lambda: rosgraph_service_up(master, '/dynamic_map'), 60, 'the mapper', procs)
+    get_state = rospy.ServiceProxy('/gazebo/get_model_state', GetModelState, persistent=True)
+    wait_until(lambda: get_state(model_name=model).success, 60, 'model %s spawned' % model, procs)
+    parameters = rospy.get_param('/hector_mapping')
+
+    bag = os.path.join(tempfile.gettempdir(), 'bench_mapping_%s.bag' % robot)  # kept: reproduce from it
+    recorder = procs.start('rosbag', ['rosbag', 'record', '-O', bag, scan_topic, '/tf', '/tf_static'], env)
+    time.sleep(2.0)  # the recorder subscribes before the robot moves
+
+    def truth():
+        s = get_state(model_name=model)
+        return s.header.stamp.to_sec(), s.pose.position.x, s.pose.position.y, yaw_of(s.pose.orientation)
+    waypoints, speed, max_turn = load_tour(os.path.join(ROOT, tour))
+    cmd = rospy.Publisher(cmd_vel, Twist, queue_size=1)
+    start = time.monotonic()
+    reached = follow_waypoints(truth, cmd, waypoints, speed, max_turn, timeout=600.0)
+    drive_seconds = time.monotonic() - start
+    time.sleep(1.0)
+    if save_maps:
+        subprocess.check_call(['rosrun', 'hector_style_mapping', 'save_map', '-f',
+                               os.path.join(os.path.abspath(save_maps), robot + '_map')], env=env)
+    os.killpg(recorder.pid, signal.SIGINT)  # rosbag closes the bag on SIGINT
+    recorder.wait(20)
+    procs.stop_all()  # SIGINT: the mapper logs its timing summary as it exits
+
+    with open(os.path.join(procs.log_dir, 'launch.log'), errors='replace') as f:
+        found = SUMMARY.findall(f.read())
+    if not found:
+        raise RuntimeError('the mapper printed no timing summary:\n' + procs.log_tail('launch'))
+    scans, mean, worst = found[-1]
+    beams = {'m_robot': 359, 'pioneer': 720}[robot]
+    print('%s: drove %d of %d waypoints in %.0f s (wall)' % (robot, reached, len(waypoints), drive_seconds))
+    print('mapping per scan (%s, %d beams, live): mean %s ms, max %s ms over %s scans' % (robot, beams, mean, worst,
+                                                                                         scans))
+    binary = os.path.join(ROOT, 'devel', 'lib', 'hector_style_mapping', 'bench_mapping_bag')
+    argv = [binary, bag, scan_topic, base_frame] + ['_%s:=%s' % (k, parameters[k]) for k in BAG_PARAMETERS
+                                                     if k in parameters]
+    out = subprocess.run(argv, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=300)
+    match = re.search(r'bag: (\d+) scans of (\d+) beams: mean ([\d.]+) ms, max ([\d.]+) ms', out.stdout)
+    if out.returncode != 0 or not match:
+        raise RuntimeError('bench_mapping_bag failed:\n' + out.stdout)
+    print('mapping per scan (%s, %s beams, bag): mean %s ms, max %s ms over %s scans'
+          % (robot, match.group(2), match.group(3), match.group(4), match.group(1)))
+    print('  ' + out.stdout.strip())
+    print('  reproduce the bag figure: %s' % ' '.join(argv))
+    sys.stdout.flush()
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
+    parser.add_argument('--robot', choices=sorted(ROBOTS), help='only this robot (default: each in turn)')
+    parser.add_argument('--save-maps', metavar='DIR', help='also save each map (PGM, YAML, PNG) into DIR')
+    args = parser.parse_args()
+    if not args.robot:
+        # One process per robot: rospy cannot move to another master once initialised.
+        status = 0
+        for robot in ('m_robot', 'pioneer'):
+            status |= subprocess.call([sys.executable, os.path.abspath(__file__), '--robot', robot] +
+                                      (['--save-maps', args.save_maps] if args.save_maps else []))
+        return status
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))
+    log_dir = tempfile.mkdtemp(prefix='bench_mapping.')
+    procs = Processes(log_dir)
+    try:
+        bench(args.robot, procs, args.save_maps)
+        shutil.rmtree(log_dir, ignore_errors=True)
+        return 0
+    except Exception as e:  # noqa: BLE001 - reported, then everything is stopped
+        print('bench_mapping: %s (logs in %s)' % (e, log_dir), file=sys.stderr)
+        return 1
+    finally:
+        procs.stop_all()
+
+
+if __name__ == '__main__':
+    sys.exit(main())
