@@ -16,15 +16,12 @@ Reuses bench_node_rtf.py's process handling and /clock recorder. Output lines:
 """
 import argparse
 import os
-import shutil
-import signal
-import subprocess
 import sys
-import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_node_rtf import Processes, Recorder, free_port, measure, rosgraph_service_up, wait_until  # noqa: E402
+from bench_node_rtf import (Recorder, each_robot_in_its_own_process, free_port, measure,  # noqa: E402
+                            rosgraph_service_up, run_with_processes, wait_until)
 
 ROBOTS = [
     ('simple_model', ['simple_model_control', 'simple_model.launch'], '/simple_model',
@@ -83,25 +80,9 @@ def main():
     parser.add_argument('--robot', choices=[r[0] for r in ROBOTS], help='only this robot (default: each in turn)')
     args = parser.parse_args()
     if not args.robot:
-        # One process per robot: rospy cannot move to another master once initialised.
-        status = 0
-        for robot in ROBOTS:
-            status |= subprocess.call([sys.executable, os.path.abspath(__file__), '--robot', robot[0],
-                                       '--seconds', str(args.seconds)])
-        return status
-    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))
-    log_dir = tempfile.mkdtemp(prefix='bench_control_rtf.')
-    procs = Processes(log_dir)
-    try:
-        bench(*next(r for r in ROBOTS if r[0] == args.robot), args.seconds, procs)
-        shutil.rmtree(log_dir, ignore_errors=True)
-        return 0
-    except Exception as e:  # noqa: BLE001 - reported, then everything is stopped
-        print('bench_control_rtf: %s (logs in %s)' % (e, log_dir), file=sys.stderr)
-        return 1
-    finally:
-        procs.stop_all()
-
+        return each_robot_in_its_own_process(__file__, [r[0] for r in ROBOTS], ['--seconds', str(args.seconds)])
+    robot = next(r for r in ROBOTS if r[0] == args.robot)
+    return run_with_processes('bench_control_rtf', lambda procs: bench(*robot, args.seconds, procs))
 
 if __name__ == '__main__':
     sys.exit(main())

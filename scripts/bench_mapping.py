@@ -18,7 +18,6 @@ Run with Debian's /usr/bin/python3 and the workspace sourced (scripts/env.sh).
 import argparse
 import os
 import re
-import shutil
 import signal
 import subprocess
 import sys
@@ -28,7 +27,8 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
-from bench_node_rtf import Processes, free_port, rosgraph_service_up, wait_until  # noqa: E402
+from bench_node_rtf import (each_robot_in_its_own_process, free_port, rosgraph_service_up,  # noqa: E402
+                            run_with_processes, wait_until)
 
 # name, mapping launch, model, cmd_vel, scan topic, base frame, tour
 ROBOTS = {
@@ -120,25 +120,9 @@ def main():
     parser.add_argument('--save-maps', metavar='DIR', help='also save each map (PGM, YAML, PNG) into DIR')
     args = parser.parse_args()
     if not args.robot:
-        # One process per robot: rospy cannot move to another master once initialised.
-        status = 0
-        for robot in ('m_robot', 'pioneer'):
-            status |= subprocess.call([sys.executable, os.path.abspath(__file__), '--robot', robot] +
-                                      (['--save-maps', args.save_maps] if args.save_maps else []))
-        return status
-    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))
-    log_dir = tempfile.mkdtemp(prefix='bench_mapping.')
-    procs = Processes(log_dir)
-    try:
-        bench(args.robot, procs, args.save_maps)
-        shutil.rmtree(log_dir, ignore_errors=True)
-        return 0
-    except Exception as e:  # noqa: BLE001 - reported, then everything is stopped
-        print('bench_mapping: %s (logs in %s)' % (e, log_dir), file=sys.stderr)
-        return 1
-    finally:
-        procs.stop_all()
-
+        return each_robot_in_its_own_process(__file__, ['m_robot', 'pioneer'],
+                                             ['--save-maps', args.save_maps] if args.save_maps else [])
+    return run_with_processes('bench_mapping', lambda procs: bench(args.robot, procs, args.save_maps))
 
 if __name__ == '__main__':
     sys.exit(main())

@@ -212,6 +212,37 @@ def run(args, procs):
     return results
 
 
+def run_with_processes(name, work):
+    """work(procs) with a fresh log folder; every process it started is stopped at the end, also on
+    errors, Ctrl-C and SIGTERM (e.g. from a timeout). Returns the exit status: 0, 1 on an error
+    (printed, with where the logs are kept) or 130 when interrupted."""
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))
+    log_dir = tempfile.mkdtemp(prefix=name + '.')
+    procs = Processes(log_dir)
+    try:
+        work(procs)
+        procs.stop_all()
+        shutil.rmtree(log_dir, ignore_errors=True)  # kept only when something went wrong
+        return 0
+    except KeyboardInterrupt:
+        print('%s: interrupted' % name, file=sys.stderr)
+        return 130
+    except Exception as e:  # noqa: BLE001 - reported, then everything is stopped
+        print('%s: %s (logs in %s)' % (name, e, log_dir), file=sys.stderr)
+        return 1
+    finally:
+        procs.stop_all()
+
+
+def each_robot_in_its_own_process(script, robots, extra_args=()):
+    """Runs `script --robot R [extra_args]` for each robot in turn; the or of their exit statuses.
+    One process per robot because rospy cannot move to another master once initialised."""
+    status = 0
+    for robot in robots:
+        status |= subprocess.call([sys.executable, os.path.abspath(script), '--robot', robot] + list(extra_args))
+    return status
+
+
 def rosgraph_service_up(master, name):
     try:
         master.lookupService(name)
@@ -230,23 +261,7 @@ def main():
         print('bench_node_rtf: no such URDF: %s' % args.urdf, file=sys.stderr)
         return 2
 
-    # SIGTERM (e.g. from a timeout) must also run the clean-up below.
-    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))
-    log_dir = tempfile.mkdtemp(prefix='bench_node_rtf.')
-    procs = Processes(log_dir)
-    try:
-        run(args, procs)
-        procs.stop_all()
-        shutil.rmtree(log_dir, ignore_errors=True)  # kept only when something went wrong
-        return 0
-    except KeyboardInterrupt:
-        print('bench_node_rtf: interrupted', file=sys.stderr)
-        return 130
-    except Exception as e:  # noqa: BLE001 - reported, then everything is stopped
-        print('bench_node_rtf: %s (logs in %s)' % (e, log_dir), file=sys.stderr)
-        return 1
-    finally:
-        procs.stop_all()
+    return run_with_processes('bench_node_rtf', lambda procs: run(args, procs))
 
 
 if __name__ == '__main__':
