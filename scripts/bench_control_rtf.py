@@ -20,8 +20,8 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_node_rtf import (Recorder, each_robot_in_its_own_process, free_port, measure,  # noqa: E402
-                            rosgraph_service_up, run_with_processes, wait_until)
+from bench_node_rtf import (Recorder, each_robot_in_its_own_process, launch_on_private_master,  # noqa: E402
+                            measure, rosgraph_service_up, run_with_processes, unthrottle, wait_until)
 
 ROBOTS = [
     ('simple_model', ['simple_model_control', 'simple_model.launch'], '/simple_model',
@@ -31,22 +31,10 @@ ROBOTS = [
 
 
 def bench(robot, launch, namespace, controller, scan_topic, seconds, procs):
-    port = free_port()
-    env = dict(os.environ, ROS_MASTER_URI='http://127.0.0.1:%d' % port, ROS_IP='127.0.0.1',
-               ROS_HOME=procs.log_dir, ROS_LOG_DIR=os.path.join(procs.log_dir, 'ros_log'))
-    env.pop('ROS_HOSTNAME', None)
-    os.environ.clear()
-    os.environ.update(env)
-    import rosgraph
     import rospy
     from controller_manager_msgs.srv import ListControllers
-    from gazebo_msgs.srv import GetPhysicsProperties, SetPhysicsProperties
 
-    procs.start('roscore_' + robot, ['roscore', '-p', str(port)], env)
-    master = rosgraph.Master('/bench_control_rtf', master_uri=env['ROS_MASTER_URI'])
-    wait_until(lambda: rosgraph_service_up(master, '/rosout/get_loggers'), 30, 'roscore', procs)
-    procs.start('launch_' + robot, ['roslaunch'] + launch, env)
-    rospy.init_node('bench_control_rtf', anonymous=True, disable_signals=True)
+    master = launch_on_private_master(procs, 'bench_control_rtf', launch)
     rec = Recorder()
     subs = [rospy.Subscriber('/clock', rospy.AnyMsg, rec.on_clock, queue_size=1000, tcp_nodelay=True)]
     if scan_topic:
@@ -59,9 +47,7 @@ def bench(robot, launch, namespace, controller, scan_topic, seconds, procs):
     time.sleep(1.0)
     running = sum(c.state == 'running' for c in lister().controller)
     results = [measure(rec, seconds, 'real time')]
-    props = rospy.ServiceProxy('/gazebo/get_physics_properties', GetPhysicsProperties)()
-    rospy.ServiceProxy('/gazebo/set_physics_properties', SetPhysicsProperties)(
-        time_step=props.time_step, max_update_rate=0.0, gravity=props.gravity, ode_config=props.ode_config)
+    unthrottle()
     time.sleep(1.0)
     results.append(measure(rec, seconds, 'unthrottled'))
     for r in results:

@@ -27,8 +27,8 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
-from bench_node_rtf import (each_robot_in_its_own_process, free_port, rosgraph_service_up,  # noqa: E402
-                            run_with_processes, wait_until)
+from bench_node_rtf import (each_robot_in_its_own_process, launch_on_private_master,  # noqa: E402
+                            rosgraph_service_up, run_with_processes, wait_until)
 
 # name, mapping launch, model, cmd_vel, scan topic, base frame, tour
 ROBOTS = {
@@ -47,24 +47,13 @@ SUMMARY = re.compile(r'hector_mapping: (\d+) scans processed, ([\d.]+) ms mean, 
 
 def bench(robot, procs, save_maps):
     launch, model, cmd_vel, scan_topic, base_frame, tour = ROBOTS[robot]
-    port = free_port()
-    env = dict(os.environ, ROS_MASTER_URI='http://127.0.0.1:%d' % port, ROS_IP='127.0.0.1',
-               ROS_HOME=procs.log_dir, ROS_LOG_DIR=os.path.join(procs.log_dir, 'ros_log'))
-    env.pop('ROS_HOSTNAME', None)
-    os.environ.clear()
-    os.environ.update(env)
-    import rosgraph
     import rospy
     from gazebo_msgs.srv import GetModelState
     from geometry_msgs.msg import Twist
     from bullet_sim_testing.mapping import follow_waypoints, load_tour
     from bullet_sim_testing.mobile import yaw_of
 
-    procs.start('roscore', ['roscore', '-p', str(port)], env)
-    master = rosgraph.Master('/bench_mapping', master_uri=env['ROS_MASTER_URI'])
-    wait_until(lambda: rosgraph_service_up(master, '/rosout/get_loggers'), 30, 'roscore', procs)
-    procs.start('launch', ['roslaunch'] + launch, env)
-    rospy.init_node('bench_mapping', anonymous=True, disable_signals=True)
+    master = launch_on_private_master(procs, 'bench_mapping', launch)
     wait_until(lambda: rosgraph_service_up(master, '/gazebo/get_model_state'), 90, '/gazebo/get_model_state', procs)
     wait_until(lambda: rosgraph_service_up(master, '/dynamic_map'), 60, 'the mapper', procs)
     get_state = rospy.ServiceProxy('/gazebo/get_model_state', GetModelState, persistent=True)
@@ -72,7 +61,7 @@ def bench(robot, procs, save_maps):
     parameters = rospy.get_param('/hector_mapping')
 
     bag = os.path.join(tempfile.gettempdir(), 'bench_mapping_%s.bag' % robot)  # kept: reproduce from it
-    recorder = procs.start('rosbag', ['rosbag', 'record', '-O', bag, scan_topic, '/tf', '/tf_static'], env)
+    recorder = procs.start('rosbag', ['rosbag', 'record', '-O', bag, scan_topic, '/tf', '/tf_static'], os.environ)
     time.sleep(2.0)  # the recorder subscribes before the robot moves
 
     def truth():
@@ -86,7 +75,7 @@ def bench(robot, procs, save_maps):
     time.sleep(1.0)
     if save_maps:
         subprocess.check_call(['rosrun', 'hector_style_mapping', 'save_map', '-f',
-                               os.path.join(os.path.abspath(save_maps), robot + '_map')], env=env)
+                               os.path.join(os.path.abspath(save_maps), robot + '_map')])
     os.killpg(recorder.pid, signal.SIGINT)  # rosbag closes the bag on SIGINT
     recorder.wait(20)
     procs.stop_all()  # SIGINT: the mapper logs its timing summary as it exits

@@ -25,8 +25,8 @@ import threading
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_node_rtf import (Recorder, each_robot_in_its_own_process, free_port, measure,  # noqa: E402
-                            rosgraph_service_up, run_with_processes, wait_until)
+from bench_node_rtf import (Recorder, each_robot_in_its_own_process, launch_on_private_master,  # noqa: E402
+                            measure, rosgraph_service_up, run_with_processes, unthrottle, wait_until)
 
 # name, launch, model, cmd_vel, scan, image
 ROBOTS = [
@@ -59,22 +59,11 @@ class ImageCounter:
 
 
 def bench(robot, launch, model, cmd_vel, scan_topic, image_topic, seconds, procs):
-    port = free_port()
-    env = dict(os.environ, ROS_MASTER_URI='http://127.0.0.1:%d' % port, ROS_IP='127.0.0.1',
-               ROS_HOME=procs.log_dir, ROS_LOG_DIR=os.path.join(procs.log_dir, 'ros_log'))
-    env.pop('ROS_HOSTNAME', None)
-    os.environ.clear()
-    os.environ.update(env)
-    import rosgraph
     import rospy
-    from gazebo_msgs.srv import GetModelState, GetPhysicsProperties, SetPhysicsProperties
+    from gazebo_msgs.srv import GetModelState
     from geometry_msgs.msg import Twist
 
-    procs.start('roscore_' + robot, ['roscore', '-p', str(port)], env)
-    master = rosgraph.Master('/bench_mobile_rtf', master_uri=env['ROS_MASTER_URI'])
-    wait_until(lambda: rosgraph_service_up(master, '/rosout/get_loggers'), 30, 'roscore', procs)
-    procs.start('launch_' + robot, ['roslaunch'] + launch, env)
-    rospy.init_node('bench_mobile_rtf', anonymous=True, disable_signals=True)
+    master = launch_on_private_master(procs, 'bench_mobile_rtf', launch)
     wait_until(lambda: rosgraph_service_up(master, '/gazebo/get_model_state'), 90, '/gazebo/get_model_state', procs)
     get_state = rospy.ServiceProxy('/gazebo/get_model_state', GetModelState)
     wait_until(lambda: get_state(model_name=model).success, 60, 'model %s spawned' % model, procs)
@@ -105,9 +94,7 @@ def bench(robot, launch, model, cmd_vel, scan_topic, image_topic, seconds, procs
         return r
 
     results = [timed('real time')]
-    props = rospy.ServiceProxy('/gazebo/get_physics_properties', GetPhysicsProperties)()
-    rospy.ServiceProxy('/gazebo/set_physics_properties', SetPhysicsProperties)(
-        time_step=props.time_step, max_update_rate=0.0, gravity=props.gravity, ode_config=props.ode_config)
+    unthrottle()
     time.sleep(1.0)
     results.append(timed('unthrottled'))
     image_sub.unregister()

@@ -212,6 +212,35 @@ def run(args, procs):
     return results
 
 
+def launch_on_private_master(procs, name, launch_args):
+    """A roscore of our own on a free port, then `roslaunch LAUNCH_ARGS` against it, and this process
+    made a ROS node there. Returns the master (rosgraph.Master). The environment is changed for good:
+    call once per process."""
+    port = free_port()
+    env = dict(os.environ, ROS_MASTER_URI='http://127.0.0.1:%d' % port, ROS_IP='127.0.0.1',
+               ROS_HOME=procs.log_dir, ROS_LOG_DIR=os.path.join(procs.log_dir, 'ros_log'))
+    env.pop('ROS_HOSTNAME', None)
+    os.environ.clear()
+    os.environ.update(env)
+    import rosgraph
+    import rospy
+    procs.start('roscore', ['roscore', '-p', str(port)], env)
+    master = rosgraph.Master('/' + name, master_uri=env['ROS_MASTER_URI'])
+    wait_until(lambda: rosgraph_service_up(master, '/rosout/get_loggers'), 30, 'roscore', procs)
+    procs.start('launch', ['roslaunch'] + list(launch_args), env)
+    rospy.init_node(name, anonymous=True, disable_signals=True)
+    return master
+
+
+def unthrottle():
+    """/gazebo/set_physics_properties with max_update_rate 0 (time step and gravity kept)."""
+    import rospy
+    from gazebo_msgs.srv import GetPhysicsProperties, SetPhysicsProperties
+    props = rospy.ServiceProxy('/gazebo/get_physics_properties', GetPhysicsProperties)()
+    rospy.ServiceProxy('/gazebo/set_physics_properties', SetPhysicsProperties)(
+        time_step=props.time_step, max_update_rate=0.0, gravity=props.gravity, ode_config=props.ode_config)
+
+
 def run_with_processes(name, work):
     """work(procs) with a fresh log folder; every process it started is stopped at the end, also on
     errors, Ctrl-C and SIGTERM (e.g. from a timeout). Returns the exit status: 0, 1 on an error
