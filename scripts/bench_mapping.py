@@ -5,10 +5,12 @@
 
 For each robot (m_robot: 359-beam lidar at 5.5 Hz; Pioneer: 720-beam Hokuyo at 40 Hz), on a private
 roscore: its mapping launch file (simulator + mapper, headless), the tour of its maze that the
-mapping rostest drives (config/mapping_tour.yaml), and `rosbag record` of the scans and tf. The
+mapping rostest drives (config/mapping_tour.yaml), and `rosbag record` of the scans, tf and the
+drive's ground-truth odometry. The
 mapper logs its own per-scan time at shutdown (scan conversion + matching + map update + pose
 output, wall clock): that is the live figure. Then bench_mapping_bag runs the same code on the
-bag, with the mapper's parameters as the launch file set them, without simulator or master.
+bag, with the mapper's parameters as the launch file set them, without simulator or master, and
+also reports the pose errors against the recorded ground truth.
 With --save-maps, save_map writes DIR/<robot>_map.{pgm,yaml,png} at the end of the live run (the
 docs' pictures). Output lines (parsed by scripts/bench):
   mapping per scan (<robot>, <beams> beams, live): mean X ms, max Y ms over N scans
@@ -30,12 +32,13 @@ sys.path.insert(0, HERE)
 from bench_node_rtf import (each_robot_in_its_own_process, launch_on_private_master,  # noqa: E402
                             rosgraph_service_up, run_with_processes, wait_until)
 
-# name, mapping launch, model, cmd_vel, scan topic, base frame, tour
+# name: mapping launch, model, cmd_vel, scan topic, base frame, tour, ground-truth odometry (the drive
+# plugin's, odometrySource world)
 ROBOTS = {
     'm_robot': (['m_robot_sim', 'm_robot_mapping.launch'], 'm_robot', '/cmd_vel', '/m_robot/laser/scan',
-                'base_frame', 'src/m_robot_sim/config/mapping_tour.yaml'),
+                'base_frame', 'src/m_robot_sim/config/mapping_tour.yaml', '/odom'),
     'pioneer': (['pioneer_sim', 'pioneer_mapping.launch'], 'pioneer', '/pioneer/cmd_vel', '/pioneer/laser/scan',
-                'base_link', 'src/pioneer_sim/config/mapping_tour.yaml'),
+                'base_link', 'src/pioneer_sim/config/mapping_tour.yaml', '/pioneer/odom'),
 }
 # The node's parameters bench_mapping_bag takes (the map and the beam filters).
 BAG_PARAMETERS = ('map_resolution', 'map_size', 'map_start_x', 'map_start_y', 'map_multi_res_levels',
@@ -46,7 +49,7 @@ SUMMARY = re.compile(r'hector_mapping: (\d+) scans processed, ([\d.]+) ms mean, 
 
 
 def bench(robot, procs, save_maps):
-    launch, model, cmd_vel, scan_topic, base_frame, tour = ROBOTS[robot]
+    launch, model, cmd_vel, scan_topic, base_frame, tour, truth_topic = ROBOTS[robot]
     import rospy
     from gazebo_msgs.srv import GetModelState
     from geometry_msgs.msg import Twist
@@ -61,7 +64,8 @@ def bench(robot, procs, save_maps):
     parameters = rospy.get_param('/hector_mapping')
 
     bag = os.path.join(tempfile.gettempdir(), 'bench_mapping_%s.bag' % robot)  # kept: reproduce from it
-    recorder = procs.start('rosbag', ['rosbag', 'record', '-O', bag, scan_topic, '/tf', '/tf_static'], os.environ)
+    recorder = procs.start('rosbag', ['rosbag', 'record', '-O', bag, scan_topic, '/tf', '/tf_static', truth_topic],
+                           os.environ)
     time.sleep(2.0)  # the recorder subscribes before the robot moves
 
     def truth():
@@ -90,8 +94,8 @@ def bench(robot, procs, save_maps):
     print('mapping per scan (%s, %d beams, live): mean %s ms, max %s ms over %s scans' % (robot, beams, mean, worst,
                                                                                          scans))
     binary = os.path.join(ROOT, 'devel', 'lib', 'hector_style_mapping', 'bench_mapping_bag')
-    argv = [binary, bag, scan_topic, base_frame] + ['_%s:=%s' % (k, parameters[k]) for k in BAG_PARAMETERS
-                                                     if k in parameters]
+    argv = [binary, bag, scan_topic, base_frame, '--truth', truth_topic] + [
+        '_%s:=%s' % (k, parameters[k]) for k in BAG_PARAMETERS if k in parameters]
     out = subprocess.run(argv, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=300)
     match = re.search(r'bag: (\d+) scans of (\d+) beams: mean ([\d.]+) ms, max ([\d.]+) ms', out.stdout)
     if out.returncode != 0 or not match:

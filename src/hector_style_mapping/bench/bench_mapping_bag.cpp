@@ -2,20 +2,29 @@
 // SCAN_TOPIC goes through the node's own steps (tf from the bag for the laser's pose, scanToPoints,
 // SlamProcessor::update), timed as the node times them.
 //
-//   bench_mapping_bag BAG SCAN_TOPIC BASE_FRAME [_param:=value ...]
+//   bench_mapping_bag BAG SCAN_TOPIC BASE_FRAME [--truth ODOM_TOPIC] [_param:=value ...]
+//
+// With --truth, ODOM_TOPIC (nav_msgs/Odometry of the base in a fixed frame, e.g. a drive plugin's
+// odometrySource world) is the ground truth: the mapper's poses are compared with it at their
+// stamps, in the map frame (the truth at the first scan), and the errors are printed too:
+//   accuracy: N poses, RMS X mm Y deg, max X mm Y deg, final X mm Y deg
 //
 // The _param:=value pairs are the node's map and filter parameters (map_resolution, map_size,
 // map_start_x, map_start_y, map_multi_res_levels, update_factor_free, update_factor_occupied,
 // map_update_distance_thresh, map_update_angle_thresh, laser_min_dist, laser_max_dist,
 // laser_z_min_value, laser_z_max_value). Prints one line scripts/bench_mapping.py reads:
 //   bag: N scans of B beams: mean X ms, max Y ms per scan; final pose x y theta
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <string>
+#include <vector>
 
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
+#include <nav_msgs/Odometry.h>
 #include <sensor_msgs/LaserScan.h>
 #include <tf2/buffer_core.h>
 #include <tf2/exceptions.h>
@@ -48,18 +57,79 @@ bool setParameter(const std::string& name, const std::string& value, MapperOptio
   return true;
 }
 
+struct StampedPose {
+  double t;
+  hector_style_mapping::Pose2D pose;
+};
+
+double yawOf(const geometry_msgs::Quaternion& q) {
+  return std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
+}
+
+// The truth at time t, linearly interpolated; false outside the samples or across a gap > 0.1 s.
+bool truthAt(const std::vector<StampedPose>& truth, double t, hector_style_mapping::Pose2D* out) {
+  const auto after = std::lower_bound(truth.begin(), truth.end(), t,
+                                      [](const StampedPose& s, double time) { return s.t < time; });
+  if (after == truth.begin() || after == truth.end()) return false;
+  const StampedPose& a = *(after - 1);
+  const StampedPose& b = *after;
+  if (b.t - a.t > 0.1) return false;
+  const double f = b.t > a.t ? (t - a.t) / (b.t - a.t) : 0.0;
+  out->x = a.pose.x + f * (b.pose.x - a.pose.x);
+  out->y = a.pose.y + f * (b.pose.y - a.pose.y);
+  out->theta = a.pose.theta + f * hector_style_mapping::normalizeAngle(b.pose.theta - a.pose.theta);
+  return true;
+}
+
+// Pose b in the frame of pose a.
+hector_style_mapping::Pose2D relative(const hector_style_mapping::Pose2D& a, const hector_style_mapping::Pose2D& b) {
+  const double c = std::cos(a.theta), s = std::sin(a.theta), dx = b.x - a.x, dy = b.y - a.y;
+  return {c * dx + s * dy, -s * dx + c * dy, hector_style_mapping::normalizeAngle(b.theta - a.theta)};
+}
+
+void printAccuracy(const std::vector<StampedPose>& truth, const std::vector<StampedPose>& slam) {
+  hector_style_mapping::Pose2D start;
+  if (slam.empty() || !truthAt(truth, slam.front().t, &start)) {
+    std::printf("accuracy: no ground truth at the first scan\n");
+    return;
+  }
+  double sum_d = 0, sum_a = 0, max_d = 0, max_a = 0, last_d = 0, last_a = 0;
+  long n = 0;
+  for (const StampedPose& p : slam) {
+    hector_style_mapping::Pose2D at;
+    if (!truthAt(truth, p.t, &at)) continue;
+    const hector_style_mapping::Pose2D expected = relative(start, at);
+    last_d = std::hypot(p.pose.x - expected.x, p.pose.y - expected.y);
+    last_a = std::abs(hector_style_mapping::normalizeAngle(p.pose.theta - expected.theta));
+    sum_d += last_d * last_d;
+    sum_a += last_a * last_a;
+    max_d = std::max(max_d, last_d);
+    max_a = std::max(max_a, last_a);
+    ++n;
+  }
+  const double deg = 180.0 / M_PI;
+  std::printf("accuracy: %ld poses, RMS %.1f mm %.2f deg, max %.1f mm %.2f deg, final %.1f mm %.2f deg\n", n,
+              1e3 * std::sqrt(sum_d / std::max(n, 1L)), deg * std::sqrt(sum_a / std::max(n, 1L)), 1e3 * max_d,
+              deg * max_a, 1e3 * last_d, deg * last_a);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 4) {
-    std::fprintf(stderr, "usage: bench_mapping_bag BAG SCAN_TOPIC BASE_FRAME [_param:=value ...]\n");
+    std::fprintf(stderr, "usage: bench_mapping_bag BAG SCAN_TOPIC BASE_FRAME [--truth ODOM_TOPIC] [_param:=value ...]\n");
     return 2;
   }
   const std::string bag_path = argv[1], scan_topic = argv[2], base_frame = argv[3];
   MapperOptions options;
   ScanFilter filter;
+  std::string truth_topic;
   for (int i = 4; i < argc; ++i) {
     const std::string arg = argv[i];
+    if (arg == "--truth" && i + 1 < argc) {
+      truth_topic = argv[++i];
+      continue;
+    }
     const auto sep = arg.find(":=");
     if (arg.empty() || arg[0] != '_' || sep == std::string::npos ||
         !setParameter(arg.substr(1, sep - 1), arg.substr(sep + 2), &options, &filter)) {
@@ -86,8 +156,19 @@ int main(int argc, char** argv) {
   hector_style_mapping::ScanPoints points;
   long scans = 0, beams = 0, no_tf = 0;
   double total_ms = 0.0, max_ms = 0.0;
-  rosbag::View view(bag, rosbag::TopicQuery({scan_topic, "/tf", "/tf_static"}));
+  std::vector<StampedPose> truth, slam_poses;
+  std::vector<std::string> topics = {scan_topic, "/tf", "/tf_static"};
+  if (!truth_topic.empty()) topics.push_back(truth_topic);
+  rosbag::View view(bag, rosbag::TopicQuery(topics));
   for (const rosbag::MessageInstance& m : view) {
+    if (!truth_topic.empty() && m.getTopic() == truth_topic) {
+      const auto odometry = m.instantiate<nav_msgs::Odometry>();
+      if (odometry)
+        truth.push_back({odometry->header.stamp.toSec(),
+                         {odometry->pose.pose.position.x, odometry->pose.pose.position.y,
+                          yawOf(odometry->pose.pose.orientation)}});
+      continue;
+    }
     if (m.getTopic() == "/tf" || m.getTopic() == "/tf_static") {
       const auto transforms = m.instantiate<tf2_msgs::TFMessage>();
       for (const auto& t : transforms->transforms) tf.setTransform(t, "bag", m.getTopic() == "/tf_static");
@@ -109,6 +190,7 @@ int main(int argc, char** argv) {
     hector_style_mapping::scanToPoints(*scan, laser_in_base, filter, &points);
     slam.update(points);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    slam_poses.push_back({scan->header.stamp.toSec(), slam.pose()});
     ++scans;
     beams = static_cast<long>(scan->ranges.size());
     total_ms += ms;
@@ -121,5 +203,9 @@ int main(int argc, char** argv) {
   }
   std::printf("bag: %ld scans of %ld beams: mean %.3f ms, max %.3f ms per scan; final pose %.3f %.3f %.4f\n", scans,
               beams, total_ms / scans, max_ms, slam.pose().x, slam.pose().y, slam.pose().theta);
+  if (!truth_topic.empty()) {
+    std::sort(truth.begin(), truth.end(), [](const StampedPose& a, const StampedPose& b) { return a.t < b.t; });
+    printAccuracy(truth, slam_poses);
+  }
   return 0;
 }

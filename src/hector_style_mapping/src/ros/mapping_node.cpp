@@ -264,10 +264,13 @@ void MappingNode::publishMapTransform(const ros::Time& stamp) {
     const tf2::Transform map_to_base(q, tf2::Vector3(slam_.pose().x, slam_.pose().y, odom_to_base.getOrigin().z()));
     map_to_odom = map_to_base * odom_to_base.inverse();
   }
-  map_transform_.header.stamp = stamp;
   map_transform_.header.frame_id = options_.map_frame;
   map_transform_.child_frame_id = options_.odom_frame;
   map_transform_.transform = tf2::toMsg(map_to_odom);
+  // When the re-publication timer has already sent this transform at the scan's stamp or later,
+  // the new value waits for its next tick: tf rejects two transforms at one stamp (TF_REPEATED_DATA).
+  if (have_map_transform_ && stamp <= map_transform_.header.stamp) return;
+  map_transform_.header.stamp = stamp;
   have_map_transform_ = true;
   tf_broadcaster_.sendTransform(map_transform_);
 }
@@ -298,15 +301,19 @@ void MappingNode::appendTrajectory(const ros::Time& stamp) {
 }
 
 void MappingNode::publishMap() {
+  const ros::Time now = ros::Time::now();
+  trajectory_.header.stamp = now;
+  trajectory_publisher_.publish(trajectory_);
+  // The map topics are latched: an unchanged map need not be converted and sent again.
+  if (slam_.mapUpdateCount() == published_map_updates_) return;
+  published_map_updates_ = slam_.mapUpdateCount();
   nav_msgs::OccupancyGrid map;
-  map.header.stamp = ros::Time::now();
+  map.header.stamp = now;
   map.header.frame_id = options_.map_frame;
   fillOccupancyGrid(slam_.map().finest(), &map);
-  map.info.map_load_time = map.header.stamp;
+  map.info.map_load_time = now;
   map_publisher_.publish(map);
   map_metadata_publisher_.publish(map.info);
-  trajectory_.header.stamp = map.header.stamp;
-  trajectory_publisher_.publish(trajectory_);
 }
 
 bool MappingNode::dynamicMapService(nav_msgs::GetMap::Request&, nav_msgs::GetMap::Response& response) {
@@ -321,6 +328,7 @@ void MappingNode::reset(const std::string& why) {
   slam_.reset();
   trajectory_.poses.clear();
   have_initial_pose_ = false;
+  published_map_updates_ = -1;  // the empty map goes out now
   publishMap();
   ROS_INFO("hector_mapping: map and pose reset (%s)", why.c_str());
 }

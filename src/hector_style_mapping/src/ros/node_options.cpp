@@ -137,8 +137,8 @@ std::string loadNodeOptions(const ros::NodeHandle& private_nh, NodeOptions* opti
   if (!(options->transform_pub_period >= 0.0))
     reader.problem("transform_pub_period: expected >= 0 s, 0 to publish only with each scan (got " +
                    std::to_string(options->transform_pub_period) + ")");
-  for (const std::string* frame : {&options->base_frame, &options->map_frame, &options->odom_frame})
-    if (frame->empty()) reader.problem("base_frame, map_frame and odom_frame must not be empty");
+  if (options->base_frame.empty() || options->map_frame.empty() || options->odom_frame.empty())
+    reader.problem("base_frame, map_frame, odom_frame: expected frame names, got an empty one");
   if (options->map_frame == options->base_frame)
     reader.problem("map_frame and base_frame are both '" + options->map_frame + "': expected two frames");
   return reader.problems();

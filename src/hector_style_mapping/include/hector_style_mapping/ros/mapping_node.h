@@ -77,6 +77,7 @@ class MappingNode {
   geometry_msgs::TransformStamped map_transform_;  // the last map -> odom (or -> base) sent
   bool have_map_transform_ = false;
   nav_msgs::Path trajectory_;
+  int published_map_updates_ = -1;  // SlamProcessor::mapUpdateCount() at the last map publication
   ScanPoints scan_points_;  // reused: no allocation per scan
   ScanTiming timing_;
 };
