@@ -10,6 +10,7 @@ no usable beam) gets a clear, throttled warning and never stops it; reset_map an
 import math
 import os
 import subprocess
+import tempfile
 import threading
 import time
 import unittest
@@ -265,6 +266,30 @@ class MappingNodeTest(unittest.TestCase):
             # Mapping starts over where the robot now is: that pose becomes the origin.
             self.assert_still_mapping((0.0, 0.0, 0.0))
             self.assertGreater(self.known_cells()[0], 100)
+
+    # --- saving ---------------------------------------------------------------------------------
+
+    def test_7b_save_map_writes_map_server_files_and_a_png(self):
+        self.drive([(0.0, 0.0, 0.0)] * 3)
+        time.sleep(0.5)  # a map publication (map_pub_period 0.2 s)
+        base = os.path.join(tempfile.mkdtemp(), 'new_folder', 'room')
+        run = subprocess.run(['rosrun', 'hector_style_mapping', 'save_map', '-f', base], stdout=subprocess.PIPE,
+                             stderr=subprocess.STDOUT, text=True, timeout=60)
+        self.assertEqual(run.returncode, 0, run.stdout)
+        with open(base + '.yaml') as f:
+            meta = f.read()
+        self.assertIn('image: room.pgm', meta)
+        self.assertIn('resolution: 0.050000', meta)
+        with open(base + '.pgm', 'rb') as f:
+            self.assertTrue(f.read(2) == b'P5')
+        self.assertGreater(os.path.getsize(base + '.png'), 0)
+
+    def test_7c_save_map_says_why_it_cannot_write(self):
+        run = subprocess.run(['rosrun', 'hector_style_mapping', 'save_map', '-f', '/proc/no_such_place/room'],
+                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=60)
+        self.assertEqual(run.returncode, 1, run.stdout)
+        self.assertIn('save_map: cannot write /proc/no_such_place/room.pgm', run.stdout)
+        self.assertNotIn('Traceback', run.stdout)
 
     # --- configuration --------------------------------------------------------------------------
 
