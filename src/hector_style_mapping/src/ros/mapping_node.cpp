@@ -124,6 +124,7 @@ bool MappingNode::acceptStamp(const ros::Time& stamp) {
              back, last_scan_stamp_.toSec(), stamp.toSec(), nh_.resolveName(options_.sys_msg_topic).c_str());
     tf_buffer_.clear();
     last_scan_stamp_ = stamp;
+    have_map_transform_ = false;  // its stamp is from the old time line: never newer than what comes now
     return true;
   }
   ROS_WARN_THROTTLE(5.0, "hector_mapping: scan stamped %.6f is not newer than the last one (%.6f): dropped",

@@ -26,6 +26,7 @@ from rosgraph_msgs.msg import Log
 from sensor_msgs.msg import LaserScan
 from std_msgs.msg import String
 from std_srvs.srv import Trigger
+from tf2_msgs.msg import TFMessage
 
 LASER_X = 0.1  # the launch file's base_link -> laser
 
@@ -77,9 +78,10 @@ class MappingNodeTest(unittest.TestCase):
         cls.scan_pub = rospy.Publisher('/scan', LaserScan, queue_size=50)
         cls.sys_pub = rospy.Publisher('/syscommand', String, queue_size=2, latch=False)
         cls.lock = threading.Lock()
-        cls.poses, cls.pose_updates, cls.logs = [], [], []
+        cls.poses, cls.pose_updates, cls.logs, cls.map_tf_stamps = [], [], [], []
         rospy.Subscriber('/slam_out_pose', PoseStamped, lambda m: cls._keep(cls.poses, m))
         rospy.Subscriber('/poseupdate', PoseWithCovarianceStamped, lambda m: cls._keep(cls.pose_updates, m))
+        rospy.Subscriber('/tf', TFMessage, cls._on_tf)
         rospy.Subscriber('/rosout', Log, lambda m: cls._keep(cls.logs, m) if m.name.endswith('hector_mapping') else None)
         cls.tf = tf2_ros.Buffer()
         cls.tf_listener = tf2_ros.TransformListener(cls.tf)
@@ -90,6 +92,12 @@ class MappingNodeTest(unittest.TestCase):
         while cls.scan_pub.get_num_connections() == 0 and time.time() < deadline:
             time.sleep(0.05)
         cls.last_stamp = rospy.Time.now()
+
+    @classmethod
+    def _on_tf(cls, msg):
+        for t in msg.transforms:
+            if t.header.frame_id == 'map' and t.child_frame_id == 'base_link':
+                cls._keep(cls.map_tf_stamps, t.header.stamp)
 
     @classmethod
     def _keep(cls, store, msg):
@@ -241,9 +249,12 @@ class MappingNodeTest(unittest.TestCase):
         self.assert_still_mapping()
         # A clock restarted (10 s back): taken as a new time line, said once, and mapping goes on
         # (the static laser tf survives the tf buffer being cleared).
-        self.scan(ranges_from(0, 0, 0, 360), stamp=type(self).last_stamp - rospy.Duration(10.0))
+        restart = type(self).last_stamp - rospy.Duration(10.0)
+        self.scan(ranges_from(0, 0, 0, 360), stamp=restart)
         self.assert_still_mapping()
         self.assertEqual(len(self.warnings_containing('time went back', since)), 1)
+        with self.lock:  # map -> base_link went out on the new time line too
+            self.assertIn(restart, self.map_tf_stamps)
 
     # --- reset ----------------------------------------------------------------------------------
 
