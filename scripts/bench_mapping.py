@@ -117,5 +117,6 @@ def main():
                                              ['--save-maps', args.save_maps] if args.save_maps else [])
     return run_with_processes('bench_mapping', lambda procs: bench(args.robot, procs, args.save_maps))
 
+
 if __name__ == '__main__':
     sys.exit(main())

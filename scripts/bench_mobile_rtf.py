@@ -122,5 +122,6 @@ def main():
     robot = next(r for r in ROBOTS if r[0] == args.robot)
     return run_with_processes('bench_mobile_rtf', lambda procs: bench(*robot, args.seconds, procs))
 
+
 if __name__ == '__main__':
     sys.exit(main())

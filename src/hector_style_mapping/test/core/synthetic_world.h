@@ -12,11 +12,23 @@
 
 #include <Eigen/Core>
 
+#include "hector_style_mapping/mapper_options.h"
 #include "hector_style_mapping/pose_2d.h"
 #include "hector_style_mapping/scan_points.h"
 
 namespace hector_style_mapping {
 namespace testing {
+
+constexpr double kDegree = M_PI / 180.0;
+
+// The lecture's m_robot setting: 5 cm cells, 2 levels.
+inline MapperOptions robotOptions() {
+  MapperOptions options;
+  options.map_resolution = 0.05;
+  options.map_size = 512;
+  options.map_multi_res_levels = 2;
+  return options;
+}
 
 struct Segment {
   Eigen::Vector2d a;

@@ -16,15 +16,8 @@ namespace {
 using testing::LaserConfig;
 using testing::SyntheticWorld;
 
-constexpr double kDegree = M_PI / 180.0;
-
-MapperOptions robotOptions() {  // the lecture's m_robot setting
-  MapperOptions options;
-  options.map_resolution = 0.05;
-  options.map_size = 512;
-  options.map_multi_res_levels = 2;
-  return options;
-}
+using testing::kDegree;
+using testing::robotOptions;
 
 bool mapIsEmpty(const MultiResolutionMap& map) {
   for (int i = 0; i < map.levels(); ++i) {
