@@ -99,14 +99,16 @@ class VehicleWorldTest(unittest.TestCase):
 
     def test_3_skid_steer_drives_it_forward_on_cmd_vel(self):
         start = self.pose()
-        self.drive(1.0, 0.0, 2.0)
+        # The slide's plugin runs at updateRate 5: a command starts and stops on a 0.2 s grid, so the
+        # distance of a timed command varies by up to 0.2 s of motion with the phase (upstream too).
+        self.drive(0.5, 0.0, 3.0)
         after = self.pose()
         yaw0 = roll_pitch_yaw(start.orientation)[2]
         dx, dy = after.position.x - start.position.x, after.position.y - start.position.y
         forward = dx * math.cos(yaw0) + dy * math.sin(yaw0)
-        print('cmd_vel 1 m/s for 2 s: %.3f m forward, %.3f m sideways'
+        print('cmd_vel 0.5 m/s for 3 s: %.3f m forward, %.3f m sideways'
               % (forward, -dx * math.sin(yaw0) + dy * math.cos(yaw0)))
-        self.assertAlmostEqual(forward, 2.0, delta=0.1)  # 2 m +- 5 %
+        self.assertAlmostEqual(forward, 1.5, delta=0.15)  # 0.1 m of grid, 0.05 m of slip
         self.assertLess(abs(after.position.z), 0.01)
         self.assertLess(max(abs(a) for a in roll_pitch_yaw(after.orientation)[:2]), 0.05)
 
