@@ -38,7 +38,7 @@ import threading
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-DEFAULT_URDF = os.path.join(HERE, '..', 'src', 'bullet_sim', 'bench', 'arm5.urdf')
+DEFAULT_URDF = os.path.join(HERE, '..', 'src', 'bullet_sim_core', 'bench', 'arm5.urdf')
 SCAN_TOPIC = '/arm5/scan'
 
 

@@ -3,8 +3,8 @@
 
   bench_pybullet.py URDF [seconds_of_sim=20] [repeats=3]
 
-Same model (src/bullet_sim/bench/arm5.urdf, fixed to the world), same 1 ms step, gravity
--9.8, same controller as src/bullet_sim/bench/physics_bench.cpp: every step reads the joint
+Same model (src/bullet_sim_core/bench/arm5.urdf, fixed to the world), same 1 ms step, gravity
+-9.8, same controller as src/bullet_sim_core/bench/physics_bench.cpp: every step reads the joint
 states, computes tau = clamp(kp (q* - q) + kd (dq* - dq), +-effort limit) towards
 q* = A sin(2 pi f t) and applies it with TORQUE_CONTROL, then stepSimulation(). The default
 velocity motors are disabled (VELOCITY_CONTROL, force 0) so the torque is all there is, and

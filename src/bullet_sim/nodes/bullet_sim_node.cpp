@@ -1,21 +1,25 @@
 // bullet_sim_node: the simulator, started like gzserver:
 //   rosrun bullet_sim bullet_sim_node [-u] [--verbose] [-e ENGINE] [WORLD_FILE]
+//   rosrun bullet_sim bullet_sim_node --list-plugins
 // -u starts paused. Without a world file the empty world (ground plane + sun) is loaded.
+// --list-plugins prints the plugin libraries models can name, and exits.
 // A world file that cannot be read exits with status 1 and a message naming the problem.
 #include <ros/package.h>
 #include <ros/ros.h>
 
 #include <iostream>
 
-#include "bullet_sim/description_error.h"
-#include "bullet_sim/sdf_world_parser.h"
 #include "bullet_sim/simulator.h"
+#include "bullet_sim_core/description_error.h"
+#include "bullet_sim_core/sdf_parser.h"
+#include "bullet_sim_plugins/plugin_registry.h"
 
 namespace {
 
 struct Arguments {
   bool paused = false;
   bool verbose = false;
+  bool list_plugins = false;
   std::string world_file;
 };
 
@@ -26,6 +30,8 @@ bool parseArguments(const std::vector<std::string>& args, Arguments& out, std::s
       out.paused = true;
     } else if (a == "--verbose") {
       out.verbose = true;
+    } else if (a == "--list-plugins") {
+      out.list_plugins = true;
     } else if (a == "-e" || a == "--physics") {
       ++i;  // gzserver's physics engine choice; there is only Bullet here
     } else if (!a.empty() && a[0] == '-') {
@@ -53,6 +59,10 @@ int main(int argc, char** argv) {
   if (!parseArguments(args, arguments, error)) {
     std::cerr << error << std::endl;
     return 2;
+  }
+  if (arguments.list_plugins) {
+    for (const std::string& name : bullet_sim::registeredPlugins()) std::cout << name << "\n";
+    return 0;
   }
   ros::NodeHandle gazebo("/gazebo");
   bullet_sim::SimulatorOptions options;

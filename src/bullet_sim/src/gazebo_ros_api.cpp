@@ -6,10 +6,10 @@
 
 #include <cmath>
 
-#include "bullet_sim/description_error.h"
-#include "bullet_sim/ros_conversions.h"
-#include "bullet_sim/sdf_world_parser.h"
-#include "bullet_sim/urdf_parser.h"
+#include "bullet_sim_core/description_error.h"
+#include "bullet_sim_core/sdf_parser.h"
+#include "bullet_sim_core/urdf_parser.h"
+#include "bullet_sim_plugins/ros_conversions.h"
 
 namespace bullet_sim {
 namespace {

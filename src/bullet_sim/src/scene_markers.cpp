@@ -1,6 +1,6 @@
 #include "bullet_sim/scene_markers.h"
 
-#include "bullet_sim/ros_conversions.h"
+#include "bullet_sim_plugins/ros_conversions.h"
 
 namespace bullet_sim {
 namespace {

@@ -3,10 +3,10 @@
 #include <ros/callback_queue.h>
 #include <rosgraph_msgs/Clock.h>
 
-#include "bullet_sim/description_error.h"
 #include "bullet_sim/gazebo_ros_api.h"
-#include "bullet_sim/model_plugins.h"
 #include "bullet_sim/scene_markers.h"
+#include "bullet_sim_core/description_error.h"
+#include "bullet_sim_plugins/plugin_loader.h"
 
 namespace bullet_sim {
 namespace {
@@ -35,9 +35,10 @@ Simulator::~Simulator() = default;
 
 void Simulator::spawn(const ModelDescription& model, const Eigen::Isometry3d& pose, const std::string& robot_namespace) {
   PhysicsModel& added = physics_.addModel(model, pose);
+  for (const std::string& w : model.warnings) ROS_WARN_STREAM(w);
   for (const std::string& w : physics_.warnings()) ROS_WARN_STREAM(w);
   try {
-    plugins_[model.name] = makeModelPlugins(physics_, added, robot_namespace);
+    plugins_[model.name] = loadModelPlugins(physics_, added, robot_namespace);
   } catch (...) {
     plugins_.erase(model.name);
     physics_.removeModel(model.name);

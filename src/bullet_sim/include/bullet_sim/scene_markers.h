@@ -5,7 +5,7 @@
 #include <ros/ros.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include "bullet_sim/physics_world.h"
+#include "bullet_sim_core/physics_world.h"
 
 namespace bullet_sim {
 

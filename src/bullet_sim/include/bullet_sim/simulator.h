@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "bullet_sim/model_plugin.h"
-#include "bullet_sim/physics_world.h"
-#include "bullet_sim/resource_resolver.h"
+#include "bullet_sim_core/physics_world.h"
+#include "bullet_sim_core/resource_resolver.h"
+#include "bullet_sim_plugins/model_plugin.h"
 
 namespace bullet_sim {
 

@@ -14,7 +14,8 @@ from geometry_msgs.msg import Point, Wrench
 from rosgraph_msgs.msg import Clock
 from visualization_msgs.msg import Marker, MarkerArray
 
-from sim_test_utils import G, Gazebo, package_path, pose, read, test_path
+from bullet_sim_testing.gazebo import G, Gazebo, pose
+from sim_test_utils import core_test_path, package_path, read, test_path
 
 BOX = read('urdf', 'falling_box.urdf')
 PENDULUM = read('package', 'urdf', 'pendulum.urdf')
@@ -219,7 +220,7 @@ class GazeboApiTest(unittest.TestCase):
         for world, fragment in (('unknown_geometry.world', 'expected one of box, cylinder, sphere, plane, mesh'),
                                 ('unknown_model.world', 'model://'),
                                 ('malformed.world', 'malformed.world')):
-            done = rosrun('bullet_sim_node', test_path('data', 'bad', world), '__name:=bad_world_probe')
+            done = rosrun('bullet_sim_node', core_test_path('data', 'bad', world), '__name:=bad_world_probe')
             self.assertEqual(done.returncode, 1, world + ': ' + done.stdout + done.stderr)
             self.assertIn(world, done.stderr)
             self.assertIn(fragment, done.stderr)

@@ -9,7 +9,7 @@ import rospy
 import rostest
 from sensor_msgs.msg import LaserScan
 
-from sim_test_utils import Gazebo
+from bullet_sim_testing.gazebo import Gazebo
 
 # laser_room.world's inner wall faces and laser_post's placement (see laser_room.test).
 WALLS_X = (-2.0, 3.0)

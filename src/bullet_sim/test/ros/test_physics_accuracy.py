@@ -10,7 +10,8 @@ import rospy
 import rostest
 from gazebo_msgs.msg import LinkStates
 
-from sim_test_utils import G, Gazebo, pose, read
+from bullet_sim_testing.gazebo import G, Gazebo, pose
+from sim_test_utils import read
 
 PENDULUM = read('package', 'urdf', 'pendulum.urdf')
 BOX = read('urdf', 'falling_box.urdf')

@@ -21,7 +21,7 @@ from sensor_msgs.msg import JointState
 from std_msgs.msg import Float64, Float64MultiArray
 from trajectory_msgs.msg import JointTrajectoryPoint
 
-from sim_test_utils import Gazebo
+from bullet_sim_testing.gazebo import Gazebo
 
 STRICT = 2
 CM = '/rig/controller_manager/'

@@ -1,0 +1,56 @@
+#pragma once
+// The physics: a btMultiBodyDynamicsWorld, the models in it, and a fixed-step clock.
+// No ROS here; the simulator node drives it.
+#include "bullet_sim_core/bullet_precision.h"
+#include <btBulletDynamicsCommon.h>
+#include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
+#include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bullet_sim_core/model_description.h"
+#include "bullet_sim_core/physics_model.h"
+
+namespace bullet_sim {
+
+class PhysicsWorld {
+ public:
+  explicit PhysicsWorld(const PhysicsSettings& settings = PhysicsSettings());
+  ~PhysicsWorld();
+
+  // Throws DescriptionError on a duplicate name or a model that cannot be built.
+  PhysicsModel& addModel(const ModelDescription& description, const Eigen::Isometry3d& pose);
+  bool removeModel(const std::string& name);
+  PhysicsModel* findModel(const std::string& name);
+  const PhysicsModel* findModel(const std::string& name) const;
+  std::vector<std::string> modelNames() const;  // in insertion order
+
+  void step();                // one fixed step of settings().max_step_size
+  double time() const { return time_; }
+  void setTime(double t) { time_ = t; }
+  void resetModels();         // every model back to its initial pose, joints to zero, at rest
+
+  const PhysicsSettings& settings() const { return settings_; }
+  void setSettings(const PhysicsSettings& settings);  // throws DescriptionError on bad values
+
+  btMultiBodyDynamicsWorld& bulletWorld() { return *world_; }
+  const btMultiBodyDynamicsWorld& bulletWorld() const { return *world_; }
+  // What the last addModel substituted (e.g. a missing inertial), for the node to log.
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
+ private:
+  PhysicsSettings settings_;
+  double time_ = 0.0;
+  std::unique_ptr<btDefaultCollisionConfiguration> collision_config_;
+  std::unique_ptr<btCollisionDispatcher> dispatcher_;
+  std::unique_ptr<btDbvtBroadphase> broadphase_;
+  std::unique_ptr<btMultiBodyConstraintSolver> solver_;
+  std::unique_ptr<btMultiBodyDynamicsWorld> world_;
+  std::vector<std::unique_ptr<PhysicsModel>> models_;  // destroyed before the world
+  std::vector<std::string> warnings_;
+};
+
+}  // namespace bullet_sim

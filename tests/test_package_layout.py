@@ -1,0 +1,101 @@
+"""The simulator's packages keep their shape (docs/ARCHITECTURE.md):
+
+- bullet_sim_core has no ROS in it: its sources include no ROS header and its library links no ROS
+  library (Debian installs ROS headers under /usr/include, so the build alone would not stop one);
+- dependencies point one way: core <- plugins <- ros_control <- node, and only bullet_sim_ros_control
+  depends on sim_control;
+- no product package depends on a test-only package (they may list one as a test_depend);
+- every package's package.xml declares the workspace packages its CMakeLists.txt finds.
+
+Run after building the workspace: /usr/bin/python3 -m pytest tests/test_package_layout.py
+"""
+import glob
+import os
+import re
+import subprocess
+import xml.etree.ElementTree as ET
+
+import pytest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SRC = os.path.join(ROOT, 'src')
+CORE = os.path.join(SRC, 'bullet_sim_core')
+TEST_ONLY = {'bullet_sim_testing'}
+
+# What the core may include: the C++ library, and the non-ROS libraries it is built on.
+ALLOWED_INCLUDE = re.compile(
+    r'^(bullet_sim_core/|Bullet|bt[A-Z]|Eigen/|tinyxml2\.h|urdf_parser/|urdf_model/|console_bridge/|assimp/|'
+    r'opencv2/|gtest/|[a-z_]+(\.h)?$)')
+ROS_LIBRARY = re.compile(r'lib(ros|roscpp|rosconsole|rostime|roslib|tf2|cpp_common|xmlrpcpp|message_filters)')
+
+
+def core_sources():
+    for folder in ('include', 'src', 'test', 'bench'):
+        for path in glob.glob(os.path.join(CORE, folder, '**', '*.*'), recursive=True):
+            if path.endswith(('.h', '.cpp')):
+                yield path
+
+
+def manifest(package):
+    """(run/build dependencies, test dependencies) of src/<package>/package.xml."""
+    root = ET.parse(os.path.join(SRC, package, 'package.xml')).getroot()
+    depends = {e.text.strip() for e in root if e.tag in ('depend', 'build_depend', 'exec_depend', 'build_export_depend')}
+    tests = {e.text.strip() for e in root if e.tag == 'test_depend'}
+    return depends, tests
+
+
+def workspace_packages():
+    return sorted(os.path.basename(os.path.dirname(p)) for p in glob.glob(os.path.join(SRC, '*', 'package.xml')))
+
+
+def test_the_core_includes_no_ros_header():
+    offenders = []
+    for path in core_sources():
+        with open(path) as f:
+            for number, line in enumerate(f, 1):
+                m = re.match(r'\s*#\s*include\s*[<"]([^>"]+)[>"]', line)
+                if m and not ALLOWED_INCLUDE.match(m.group(1)):
+                    offenders.append('%s:%d: %s' % (os.path.relpath(path, ROOT), number, m.group(1)))
+    assert offenders == [], 'ROS (or unexpected) headers in bullet_sim_core:\n' + '\n'.join(offenders)
+    assert len(list(core_sources())) > 20  # the scan really looked at the core
+
+
+def test_the_core_library_links_no_ros_library():
+    library = os.path.join(ROOT, 'devel', 'lib', 'libbullet_sim_core.so')
+    assert os.path.isfile(library), 'build the workspace first (scripts/setup): no ' + library
+    needed = [line.split('[')[1].rstrip(']') for line in
+              subprocess.check_output(['readelf', '-d', library], text=True).splitlines() if '(NEEDED)' in line]
+    assert any('Bullet' in n for n in needed), needed  # the check reads the right file
+    assert [n for n in needed if ROS_LIBRARY.search(n)] == []
+
+
+def test_simulator_dependencies_point_one_way():
+    order = ['bullet_sim_core', 'bullet_sim_plugins', 'bullet_sim_ros_control', 'bullet_sim']
+    for i, package in enumerate(order):
+        depends, _ = manifest(package)
+        later = [p for p in order[i + 1:] if p in depends]
+        assert later == [], '%s depends on %s, which builds on it' % (package, later)
+    for package in order[1:]:
+        assert order[order.index(package) - 1] in manifest(package)[0], package
+    users = [p for p in workspace_packages() if 'sim_control' in manifest(p)[0] and p.startswith('bullet_sim')]
+    assert users == ['bullet_sim_ros_control']
+
+
+def test_no_product_package_depends_on_a_test_package():
+    for package in workspace_packages():
+        depends, _ = manifest(package)
+        assert not (depends & TEST_ONLY), '%s depends on %s' % (package, depends & TEST_ONLY)
+    assert manifest('m_robot_sim')[1] >= {'bullet_sim_testing'}  # tests may use it
+
+
+@pytest.mark.parametrize('package', workspace_packages())
+def test_cmake_finds_only_declared_workspace_packages(package):
+    cmake = os.path.join(SRC, package, 'CMakeLists.txt')
+    with open(cmake) as f:
+        text = f.read()
+    found = set()
+    for block in re.findall(r'find_package\(\s*catkin\s+REQUIRED\s+COMPONENTS([^)]*)\)', text):
+        found |= set(block.split())
+    declared = set.union(*manifest(package))
+    ours = set(workspace_packages())
+    assert (found & ours) - declared == set(), '%s finds undeclared packages' % package
