@@ -1,130 +1,22 @@
 #!/usr/bin/env python3
-"""vehicle_world.launch: the vehicle is spawned, stands still on its four wheels, its lidar
+"""vehicle_world.launch: the xacro vehicle is spawned, stands still on its four wheels, its lidar
 publishes the lecture's 32-beam vertical fan, and its skid steer drive moves it on cmd_vel, turns
 it on the spot without tipping it, and holds it still when no command comes."""
 import math
-import time
 import unittest
 
 import rospy
 import rostest
-from gazebo_msgs.srv import ApplyJointEffort, GetLinkState, GetModelState
-from geometry_msgs.msg import Twist
-from sensor_msgs.msg import LaserScan
 
-MODEL = 'simple_vehicle'
-WHEELS = ['front_left', 'front_right', 'back_left', 'back_right']
-LIDAR_HEIGHT = 0.7  # m: the lidar's centre above the ground (base_link)
-MIN_ANGLE, MAX_ANGLE = -0.53529248, 0.18622663
+from vehicle_checks import VehicleChecks
 
 
-def roll_pitch_yaw(q):
-    roll = math.atan2(2 * (q.w * q.x + q.y * q.z), 1 - 2 * (q.x * q.x + q.y * q.y))
-    pitch = math.asin(max(-1.0, min(1.0, 2 * (q.w * q.y - q.z * q.x))))
-    yaw = math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
-    return roll, pitch, yaw
-
-
-class VehicleWorldTest(unittest.TestCase):
-    @classmethod
-    def setUpClass(cls):
-        rospy.init_node('test_vehicle_world')
-        for service in ['/gazebo/get_model_state', '/gazebo/get_link_state', '/gazebo/apply_joint_effort']:
-            rospy.wait_for_service(service, timeout=60)
-        cls.model_state = rospy.ServiceProxy('/gazebo/get_model_state', GetModelState)
-        cls.link_state = rospy.ServiceProxy('/gazebo/get_link_state', GetLinkState)
-        cls.apply_effort = rospy.ServiceProxy('/gazebo/apply_joint_effort', ApplyJointEffort)
-        deadline = time.monotonic() + 60
-        while time.monotonic() < deadline and not cls.model_state(model_name=MODEL).success:
-            time.sleep(0.2)
-
-    def pose(self):
-        state = self.model_state(model_name=MODEL)
-        self.assertTrue(state.success, state.status_message)
-        return state.pose
-
-    def sleep_sim(self, seconds):
-        end = rospy.get_time() + seconds
-        while rospy.get_time() < end and not rospy.is_shutdown():
-            rospy.sleep(0.05)
-
-    def test_1_rests_on_its_wheels(self):
-        heights, tilts = [], []
-        for _ in range(20):  # 2 s of sim time
-            pose = self.pose()
-            heights.append(pose.position.z)
-            tilts.append(max(abs(a) for a in roll_pitch_yaw(pose.orientation)[:2]))
-            self.sleep_sim(0.1)
-        print('base_link z over 2 s: %.5f .. %.5f m, tilt <= %.5f rad' % (min(heights), max(heights), max(tilts)))
-        self.assertLess(max(abs(z) for z in heights), 0.01)  # base_link is the footprint
-        self.assertLess(max(heights) - min(heights), 0.001)  # steady
-        self.assertLess(max(tilts), 0.01)
-        for wheel in WHEELS:
-            state = self.link_state(link_name='%s::%s_wheel' % (MODEL, wheel))
-            self.assertTrue(state.success, state.status_message)
-            self.assertAlmostEqual(state.link_state.pose.position.z, 0.3, delta=0.01, msg=wheel)
-
-    def test_2_lidar_publishes_the_lecture_fan(self):
-        scan = rospy.wait_for_message('/%s/scan' % MODEL, LaserScan, timeout=30)
-        self.assertEqual(len(scan.ranges), 32)
-        self.assertEqual(scan.header.frame_id, 'lidar_link')
-        self.assertAlmostEqual(scan.angle_min, MIN_ANGLE, places=5)
-        self.assertAlmostEqual(scan.angle_max, MAX_ANGLE, places=5)
-        self.assertAlmostEqual(scan.range_min, 0.05, places=5)
-        self.assertAlmostEqual(scan.range_max, 70.0, places=3)
-        # Vertical fan looking ahead: beams below the horizon meet the ground, the others nothing.
-        for i, measured in enumerate(scan.ranges):
-            angle = scan.angle_min + i * scan.angle_increment
-            if angle < -0.02:
-                expected = LIDAR_HEIGHT / math.sin(-angle)
-                if expected < 60:
-                    self.assertAlmostEqual(measured, expected, delta=0.03 + 0.005 * expected, msg='beam %d' % i)
-            elif angle > 0.0:
-                self.assertTrue(math.isinf(measured) and measured > 0, 'beam %d: %r' % (i, measured))
-
-    def drive(self, linear, angular, seconds):
-        publisher = rospy.Publisher('/%s/cmd_vel' % MODEL, Twist, queue_size=1)
-        deadline = time.monotonic() + 5
-        while time.monotonic() < deadline and publisher.get_num_connections() == 0:
-            time.sleep(0.1)
-        self.assertGreater(publisher.get_num_connections(), 0, 'nothing subscribes to /%s/cmd_vel' % MODEL)
-        command = Twist()
-        command.linear.x, command.angular.z = linear, angular
-        end = rospy.get_time() + seconds
-        while rospy.get_time() < end and not rospy.is_shutdown():
-            publisher.publish(command)
-            rospy.sleep(0.1)
-        publisher.publish(Twist())
-        self.sleep_sim(1.0)  # the drive stops the wheels; let it come to rest
-
-    def test_3_skid_steer_drives_it_forward_on_cmd_vel(self):
-        start = self.pose()
-        # The slide's plugin runs at updateRate 5: a command starts and stops on a 0.2 s grid, so the
-        # distance of a timed command varies by up to 0.2 s of motion with the phase (upstream too).
-        self.drive(0.5, 0.0, 3.0)
-        after = self.pose()
-        yaw0 = roll_pitch_yaw(start.orientation)[2]
-        dx, dy = after.position.x - start.position.x, after.position.y - start.position.y
-        forward = dx * math.cos(yaw0) + dy * math.sin(yaw0)
-        print('cmd_vel 0.5 m/s for 3 s: %.3f m forward, %.3f m sideways'
-              % (forward, -dx * math.sin(yaw0) + dy * math.cos(yaw0)))
-        self.assertAlmostEqual(forward, 1.5, delta=0.15)  # 0.1 m of grid, 0.05 m of slip
-        self.assertLess(abs(after.position.z), 0.01)
-        self.assertLess(max(abs(a) for a in roll_pitch_yaw(after.orientation)[:2]), 0.05)
-
-    def test_4_skid_steer_turns_it_without_tipping(self):
-        before = self.pose()
-        self.drive(0.0, 0.5, 2.0)
-        after = self.pose()
-        change = roll_pitch_yaw(after.orientation)[2] - roll_pitch_yaw(before.orientation)[2]
-        turned = math.atan2(math.sin(change), math.cos(change))
-        moved = math.hypot(after.position.x - before.position.x, after.position.y - before.position.y)
-        print('cmd_vel 0.5 rad/s for 2 s: yaw %+.2f rad, centre moved %.3f m' % (turned, moved))
-        # Counter-clockwise, seen from above. Only a fraction of the command: four wide-apart
-        # wheels must be dragged sideways, and in Bullet this vehicle also creeps forward while
-        # it turns (docs/SIMULATOR.md, "Wheeled drives"), so its centre is not checked.
-        self.assertGreater(turned, 0.05)
-        self.assertLess(max(abs(a) for a in roll_pitch_yaw(after.orientation)[:2]), 0.05)
+class VehicleWorldTest(VehicleChecks, unittest.TestCase):
+    MODEL = 'simple_vehicle'
+    CMD_VEL = '/simple_vehicle/cmd_vel'
+    SCAN = '/simple_vehicle/scan'
+    WHEEL_LINKS = ['front_left_wheel', 'front_right_wheel', 'back_left_wheel', 'back_right_wheel']
+    BASE_HEIGHT = 0.0  # base_link is the footprint
 
     def test_5_wheel_motors_hold_it_against_the_lecture_torque(self):
         # As in Gazebo: the skid-steer plugin drives the wheel joints with velocity motors
