@@ -113,12 +113,16 @@ class IsotropicFrictionSolver : public btMultiBodyConstraintSolver {
 
 PhysicsWorld::PhysicsWorld(const PhysicsSettings& settings)
     : collision_config_(std::make_unique<btDefaultCollisionConfiguration>()),
+      cylinder_plane_(makeCylinderPlaneAlgorithm(false)),
+      plane_cylinder_(makeCylinderPlaneAlgorithm(true)),
       dispatcher_(std::make_unique<btCollisionDispatcher>(collision_config_.get())),
       broadphase_(std::make_unique<btDbvtBroadphase>()),
       solver_(std::make_unique<IsotropicFrictionSolver>()),
       world_(std::make_unique<btMultiBodyDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                                          collision_config_.get())) {
   gCalculateCombinedFrictionCallback = &minimumFriction;
+  dispatcher_->registerCollisionCreateFunc(CYLINDER_SHAPE_PROXYTYPE, STATIC_PLANE_PROXYTYPE, cylinder_plane_.get());
+  dispatcher_->registerCollisionCreateFunc(STATIC_PLANE_PROXYTYPE, CYLINDER_SHAPE_PROXYTYPE, plane_cylinder_.get());
   setSettings(settings);
 }
 
