@@ -1,8 +1,13 @@
 // The physics core against analytic mechanics: pendulum period, free fall, kinematic frames,
 // limits, determinism. Runs without ROS.
+#include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "bullet_sim_core/description_error.h"
 #include "bullet_sim_core/physics_world.h"
@@ -294,4 +299,180 @@ TEST(PhysicsWorld, ContactFrictionComesFromMu) {
   EXPECT_LT(slide(1.0), 0.005);
   // (3 - 0.1 * 9.8) / 1 kg = 2.02 m/s^2 for 1 s: about 1 m.
   EXPECT_NEAR(slide(0.1), 0.5 * 2.02, 0.1);
+}
+
+// Wheeled vehicles on the ground plane: how cylinders touch it and how contact friction acts.
+namespace {
+
+// A wheel: a full-width cylinder r x width about the link's y axis (rolled from z, as URDFs
+// do), on a continuous joint about +y at (x, y, z) of base_link.
+std::string wheelUrdf(const std::string& name, double x, double y, double z, double r, double width, double mass) {
+  const std::string R = std::to_string(r), W = std::to_string(width), m = std::to_string(mass);
+  const std::string across = std::to_string(mass * (3 * r * r + width * width) / 12), axle = std::to_string(mass * r * r / 2);
+  return R"(<link name=")" + name + R"("><inertial><origin rpy="-1.5707963267948966 0 0"/><mass value=")" + m +
+         R"("/><inertia ixx=")" + across + R"(" ixy="0" ixz="0" iyy=")" + across + R"(" iyz="0" izz=")" + axle +
+         R"("/></inertial><collision><origin rpy="-1.5707963267948966 0 0"/><geometry><cylinder radius=")" + R +
+         R"(" length=")" + W + R"("/></geometry></collision></link>
+    <joint name=")" + name + R"(_joint" type="continuous"><parent link="base_link"/><child link=")" + name +
+         R"("/><origin xyz=")" + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) +
+         R"("/><axis xyz="0 1 0"/></joint>)";
+}
+
+// src/bullet_sim/bench/skid4.urdf: 12 kg body, four 0.5 kg wheels r 0.1 x 0.06 wide at
+// x +-0.2, y +-0.25 (separation 0.5), base_link on the ground.
+std::string skid4Urdf() {
+  std::string xml = R"(<robot name="skid4"><link name="base_link">
+    <inertial><origin xyz="0 0 0.15"/><mass value="12"/><inertia ixx="0.1825" ixy="0" ixz="0" iyy="0.3825" iyz="0" izz="0.52"/></inertial>
+    <collision><origin xyz="0 0 0.15"/><geometry><box size="0.6 0.4 0.15"/></geometry></collision></link>)";
+  for (const auto& [name, x, y] : {std::make_tuple("front_left", 0.2, 0.25), std::make_tuple("front_right", 0.2, -0.25),
+                                   std::make_tuple("back_left", -0.2, 0.25), std::make_tuple("back_right", -0.2, -0.25)})
+    xml += wheelUrdf(name, x, y, 0.1, 0.1, 0.06, 0.5);
+  return xml + "</robot>";
+}
+
+// Two drive wheels r 0.1 x 0.04 wide, 0.4 m apart, on full-width cylinders, and a frictionless
+// caster ball in front: test/urdf/diffbot.urdf's numbers.
+std::string diffbotUrdf() {
+  std::string xml = R"(<robot name="diffbot"><link name="base_link">
+    <inertial><origin xyz="0 0 0.1"/><mass value="4"/><inertia ixx="0.05" ixy="0" ixz="0" iyy="0.08" iyz="0" izz="0.1"/></inertial>
+    <collision><origin xyz="0 0 0.12"/><geometry><box size="0.4 0.3 0.08"/></geometry></collision></link>
+    <joint name="caster_joint" type="fixed"><parent link="base_link"/><child link="caster"/><origin xyz="0.16 0 0.04"/></joint>
+    <link name="caster"><inertial><mass value="0.1"/><inertia ixx="1e-4" ixy="0" ixz="0" iyy="1e-4" iyz="0" izz="1e-4"/></inertial>
+    <collision><geometry><sphere radius="0.04"/></geometry></collision></link>
+    <gazebo reference="caster"><mu1>0</mu1><mu2>0</mu2></gazebo>)";
+  xml += wheelUrdf("left", -0.05, 0.2, 0.1, 0.1, 0.04, 0.5);
+  xml += wheelUrdf("right", -0.05, -0.2, 0.1, 0.1, 0.04, 0.5);
+  return xml + "</robot>";
+}
+
+struct DriveResult {
+  double yaw_rate = 0, forward = 0, lateral = 0;  // means over the measured window
+  double z_spread = 0;                            // max - min of the base height in it
+};
+
+// Spawns `urdf` on the ground plane heading `yaw`, commands the wheels the plugins' way,
+// (v -+ w separation / 2) / r with the given torque, and averages from 1 s to `seconds`.
+DriveResult drive(const std::string& urdf, double yaw, const std::vector<std::string>& left,
+                  const std::vector<std::string>& right, double separation, double radius, double torque, double v,
+                  double w, double seconds = 2.5) {
+  PhysicsWorld world;
+  world.addModel(groundPlane(), Eigen::Isometry3d::Identity());
+  PhysicsModel& model = world.addModel(parse(urdf), xyzRpy(0, 0, 0, 0, 0, yaw));
+  for (int i = 0; i < 300; ++i) world.step();  // land
+  for (const auto& j : left) model.setJointMotor(model.jointIndex(j + "_joint"), 0, (v - w * separation / 2) / radius, 0, torque);
+  for (const auto& j : right) model.setJointMotor(model.jointIndex(j + "_joint"), 0, (v + w * separation / 2) / radius, 0, torque);
+  DriveResult r;
+  double z_min = 1e9, z_max = -1e9;
+  int n = 0;
+  for (int i = 1; i <= static_cast<int>(seconds * 1000); ++i) {
+    world.step();
+    if (i < 1000) continue;
+    const Eigen::Isometry3d pose = model.pose();
+    const Twist t = model.twist();
+    const Eigen::Vector3d heading = pose.linear().col(0);
+    r.yaw_rate += t.angular.z();
+    r.forward += t.linear.dot(heading);
+    r.lateral += t.linear.dot(Eigen::Vector3d::UnitZ().cross(heading));
+    z_min = std::min(z_min, pose.translation().z());
+    z_max = std::max(z_max, pose.translation().z());
+    ++n;
+  }
+  r.yaw_rate /= n;
+  r.forward /= n;
+  r.lateral /= n;
+  r.z_spread = z_max - z_min;
+  return r;
+}
+
+const std::vector<std::string> kSkidLeft{"front_left", "back_left"}, kSkidRight{"front_right", "back_right"};
+
+}  // namespace
+
+TEST(PhysicsWorld, SkidSteerTurnsOnTheSpotAtTheSameRateWhateverItsHeading) {
+  // Commanded 0.5 rad/s, skid4 turns at 0.296 rad/s in PyBullet (URDF_USE_IMPLICIT_CYLINDER,
+  // heading 45 degrees; scripts/bench_skid_steer.py) and 0.305 rad/s with Coulomb friction,
+  // 0.5 / (1 + (0.2 / 0.25)^2). Before the friction rows followed the slip it turned at
+  // about 0.04 rad/s when spawned heading 0 and at 0.29 rad/s near 45 degrees.
+  for (const double yaw_deg : {0.0, 30.0, 90.0}) {
+    const DriveResult r = drive(skid4Urdf(), yaw_deg * M_PI / 180, kSkidLeft, kSkidRight, 0.5, 0.1, 10, 0.0, 0.5);
+    EXPECT_GT(r.yaw_rate, 0.9 * 0.296) << "heading " << yaw_deg;
+    EXPECT_LT(r.yaw_rate, 1.1 * 0.296) << "heading " << yaw_deg;
+    // It turns about its centre (before: drifting 0.04 m/s off it), and its body stays level.
+    EXPECT_LT(std::abs(r.forward), 0.005) << "heading " << yaw_deg;
+    EXPECT_LT(std::abs(r.lateral), 0.005) << "heading " << yaw_deg;
+    EXPECT_LT(r.z_spread, 1e-4) << "heading " << yaw_deg;
+  }
+}
+
+TEST(PhysicsWorld, SkidSteerDrivesStraightAndArcs) {
+  // PyBullet: straight 0.300 m/s; the 0.3 m/s, 0.3 rad/s arc 0.180 rad/s at 0.298 m/s.
+  const DriveResult straight = drive(skid4Urdf(), 0, kSkidLeft, kSkidRight, 0.5, 0.1, 10, 0.3, 0.0);
+  EXPECT_NEAR(straight.forward, 0.3, 0.003);
+  EXPECT_NEAR(straight.yaw_rate, 0.0, 0.003);
+  const DriveResult arc = drive(skid4Urdf(), 0, kSkidLeft, kSkidRight, 0.5, 0.1, 10, 0.3, 0.3);
+  EXPECT_NEAR(arc.yaw_rate, 0.180, 0.1 * 0.180);
+  EXPECT_NEAR(arc.forward, 0.298, 0.1 * 0.298);
+}
+
+TEST(PhysicsWorld, DiffDriveRollsStraightAndTurnsAtTheCommandedRate) {
+  // Rolling without slip: the kinematic rates, whatever the heading.
+  const std::vector<std::string> left{"left"}, right{"right"};
+  for (const double yaw : {0.0, 0.6}) {
+    const DriveResult straight = drive(diffbotUrdf(), yaw, left, right, 0.4, 0.1, 10, 0.3, 0.0);
+    EXPECT_NEAR(straight.forward, 0.3, 0.003);
+    EXPECT_NEAR(straight.yaw_rate, 0.0, 0.003);
+    EXPECT_NEAR(straight.lateral, 0.0, 0.003);
+    const DriveResult turn = drive(diffbotUrdf(), yaw, left, right, 0.4, 0.1, 10, 0.0, 0.5);
+    EXPECT_NEAR(turn.yaw_rate, 0.5, 0.005);
+    EXPECT_NEAR(turn.forward, 0.0, 0.003);
+    const DriveResult arc = drive(diffbotUrdf(), yaw, left, right, 0.4, 0.1, 10, 0.3, 0.5);
+    EXPECT_NEAR(arc.yaw_rate, 0.5, 0.005);
+    EXPECT_NEAR(arc.forward, 0.3, 0.003);
+    EXPECT_LT(arc.z_spread, 1e-4);
+  }
+}
+
+TEST(PhysicsWorld, LyingCylinderTouchesThePlaneAlongItsMidPlane) {
+  // A full-width wheel r 0.3 x 0.25 lying on the plane: Bullet's convex-plane contact put its
+  // one point on a rim edge, 0.125 m off the mid-plane.
+  for (const double roll : {M_PI / 2, -M_PI / 2, M_PI / 2 + 1e-9}) {
+    PhysicsWorld world;
+    world.addModel(groundPlane(), Eigen::Isometry3d::Identity());
+    const char* kWheel = R"(<robot name="wheel"><link name="wheel">
+      <inertial><mass value="1"/><inertia ixx="0.03" ixy="0" ixz="0" iyy="0.03" iyz="0" izz="0.045"/></inertial>
+      <collision><geometry><cylinder radius="0.3" length="0.25"/></geometry></collision></link></robot>)";
+    PhysicsModel& wheel = world.addModel(parse(kWheel), xyzRpy(0, 0, 0.3, roll, 0, 0));
+    for (int i = 0; i < 500; ++i) world.step();
+    EXPECT_NEAR(wheel.pose().translation().z(), 0.3, 1e-3);
+    const btCollisionObject* collider = wheel.linkCollider("wheel");
+    btDispatcher* dispatcher = world.bulletWorld().getDispatcher();
+    int touching = 0;
+    for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+      const btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+      if (manifold->getBody0() != collider && manifold->getBody1() != collider) continue;
+      for (int k = 0; k < manifold->getNumContacts(); ++k) {
+        const btManifoldPoint& cp = manifold->getContactPoint(k);
+        if (cp.getAppliedImpulse() <= 0) continue;
+        const btVector3 p = manifold->getBody0() == collider ? cp.getPositionWorldOnA() : cp.getPositionWorldOnB();
+        EXPECT_NEAR(p.y(), wheel.pose().translation().y(), 1e-3) << "roll " << roll;  // the axis is along y
+        ++touching;
+      }
+    }
+    EXPECT_GE(touching, 1);
+  }
+}
+
+TEST(PhysicsWorld, StandingCylinderRestsOnItsEndCap) {
+  PhysicsWorld world;
+  world.addModel(groundPlane(), Eigen::Isometry3d::Identity());
+  const char* kCan = R"(<robot name="can"><link name="can">
+    <inertial><mass value="0.5"/><inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.0005"/></inertial>
+    <collision><geometry><cylinder radius="0.04" length="0.12"/></geometry></collision></link></robot>)";
+  PhysicsModel& can = world.addModel(parse(kCan), xyzRpy(0.3, 0.2, 0.07, 0, 0, 0.4));
+  for (int i = 0; i < 2000; ++i) world.step();
+  EXPECT_NEAR(can.pose().translation().z(), 0.06, 1e-3);
+  EXPECT_NEAR(can.pose().translation().x(), 0.3, 1e-3);
+  EXPECT_NEAR(can.pose().translation().y(), 0.2, 1e-3);
+  EXPECT_GT(can.pose().linear()(2, 2), std::cos(1e-3));  // upright
+  EXPECT_LT(can.twist().linear.norm() + can.twist().angular.norm(), 1e-3);
 }

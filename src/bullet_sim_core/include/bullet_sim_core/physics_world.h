@@ -45,9 +45,10 @@ class PhysicsWorld {
   PhysicsSettings settings_;
   double time_ = 0.0;
   std::unique_ptr<btDefaultCollisionConfiguration> collision_config_;
+  std::unique_ptr<btCollisionAlgorithmCreateFunc> cylinder_plane_, plane_cylinder_;  // outlive the dispatcher
   std::unique_ptr<btCollisionDispatcher> dispatcher_;
   std::unique_ptr<btDbvtBroadphase> broadphase_;
-  std::unique_ptr<btMultiBodyConstraintSolver> solver_;
+  std::unique_ptr<btMultiBodyConstraintSolver> solver_;  // friction along the slip: see physics_world.cpp
   std::unique_ptr<btMultiBodyDynamicsWorld> world_;
   std::vector<std::unique_ptr<PhysicsModel>> models_;  // destroyed before the world
   std::vector<std::string> warnings_;
