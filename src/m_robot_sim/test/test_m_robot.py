@@ -25,9 +25,10 @@ class MRobotTest(MobileRobotChecks, unittest.TestCase):
     SPAWN_Z = 0.1          # the launch file's -z: wheels on the ground
     MAZE_POSE = (0.0, 0.0, 0.0)  # the lecture's spawn point, inside the maze
     # A skid steer turns by dragging its wheels sideways: with four wheels 0.14 m apart along
-    # and 0.2 m across, friction lets it turn at about a third of the commanded rate (as in
-    # Gazebo, the plugin does not compensate).
-    MIN_TURN = 0.3
+    # and 0.2 m across, Coulomb friction lets it turn at 1 / (1 + (0.07 / 0.1)^2) = 0.67 of the
+    # commanded rate (scripts/bench_skid_steer.py: 0.336 rad/s for 0.5, PyBullet 0.337; as in Gazebo,
+    # the plugin does not compensate).
+    TURN = 1.5 * 0.336 / 0.5
 
 
 if __name__ == '__main__':

@@ -34,6 +34,7 @@ class MyVehicleTest(VehicleChecks, unittest.TestCase):
     CMD_VEL = '/cmd_vel'                 # the slide's plugin: <robotNamespace>/</robotNamespace>
     SCAN = '/my_vehicle/laser/scan'      # the slide's <topicName>
     WHEEL_LINKS = ['link_0', 'link_1', 'link_2', 'link_3']
+    WHEEL_SEPARATION = 1.5  # the plugin's, which sets the wheels' speeds
     BASE_HEIGHT = 0.0                    # the model frame is on the ground; the body's link is at z 0.5
 
     def test_0_links_and_joints_are_the_model_editors(self):

@@ -16,6 +16,7 @@ class VehicleWorldTest(VehicleChecks, unittest.TestCase):
     CMD_VEL = '/simple_vehicle/cmd_vel'
     SCAN = '/simple_vehicle/scan'
     WHEEL_LINKS = ['front_left_wheel', 'front_right_wheel', 'back_left_wheel', 'back_right_wheel']
+    WHEEL_SEPARATION = 1.55  # the plugin's, which sets the wheels' speeds
     BASE_HEIGHT = 0.0  # base_link is the footprint
 
     def test_5_wheel_motors_hold_it_against_the_lecture_torque(self):

@@ -49,7 +49,9 @@ class MobileRobotChecks:
     MAZE_POSE = None        # (x, y, yaw) inside the maze for the laser and camera checks
     OPEN_GROUND = (20.0, 20.0)
     SPEED = 1.0             # m/s for the straight drive
-    MIN_TURN = 0.8          # rad that 1 rad/s for 1.5 s must turn the robot at least
+    # rad that 1 rad/s for 1.5 s turns the robot, +-10 %: the commanded 1.5 rad for a diff drive;
+    # a skid steer turns less, by the rate scripts/bench_skid_steer.py measures (and PyBullet agrees).
+    TURN = 1.5
 
     @classmethod
     def setUpClass(cls):
@@ -115,8 +117,8 @@ class MobileRobotChecks:
         x1, y1, yaw1 = self.ground_truth()
         turned = angle_diff(yaw1, yaw0)
         print('%s: 1 rad/s for 1.5 s turned %.3f rad, drifting %.3f m' % (self.MODEL, turned, math.hypot(x1 - x0, y1 - y0)))
-        self.assertGreater(turned, self.MIN_TURN)
-        self.assertLess(math.hypot(x1 - x0, y1 - y0), 0.25)
+        self.assertAlmostEqual(turned, self.TURN, delta=0.1 * self.TURN)
+        self.assertLess(math.hypot(x1 - x0, y1 - y0), 0.05)  # on the spot: a symmetric robot does not drift
 
     def test_driving_into_a_wall_does_not_go_through_it(self):
         # A static wall 1 m ahead, as its own model.
