@@ -1,7 +1,8 @@
 // physics_bench: step rate of bullet_sim's physics + a PD torque controller (issue 2).
 //
-//   physics_bench URDF [seconds_of_sim=20] [repeats=3]
+//   physics_bench URDF [seconds_of_sim=20] [repeats=3] [--ground]
 //
+// --ground adds Gazebo's ground plane, as the simulator's empty world has it (PyBullet's run has none).
 // Loads URDF (normally bench/arm5.urdf) fixed to the world, and at 1 kHz applies
 //   tau_j = clamp(kp_j (q*_j - q_j) + kd_j (dq*_j - dq_j), +-effort_limit_j)
 // to every moving joint, tracking a slow sinusoid q*_j = A_j sin(2 pi f_j t). The timed loop is
@@ -27,6 +28,7 @@
 
 #include "bullet_sim_core/physics_world.h"
 #include "bullet_sim_core/resource_resolver.h"
+#include "bullet_sim_core/sdf_parser.h"
 #include "bullet_sim_core/urdf_parser.h"
 
 namespace {
@@ -51,8 +53,19 @@ struct RunResult {
 
 // With `split_timing`, the time spent inside PhysicsWorld::step() is also summed into
 // `step_seconds` (two clock reads per step: not used for the headline rate).
+bool with_ground = false;
+
+// model://ground_plane of the empty world.
+bullet_sim::ModelDescription groundPlane() {
+  return bullet_sim::parseSdfModel(
+      "<model name='ground_plane'><static>true</static><link name='link'><collision name='c'><geometry><plane>"
+      "<normal>0 0 1</normal><size>100 100</size></plane></geometry></collision></link></model>",
+      "ground_plane", "", bullet_sim::ResourceResolver());
+}
+
 RunResult runOnce(const bullet_sim::ModelDescription& description, double sim_seconds, bool split_timing = false) {
   bullet_sim::PhysicsWorld world;  // 1 ms step, gravity -9.8 z
+  if (with_ground) world.addModel(groundPlane(), Eigen::Isometry3d::Identity());
   bullet_sim::PhysicsModel& model = world.addModel(description, Eigen::Isometry3d::Identity());
   const int n = static_cast<int>(model.joints().size());
   const double dt = world.settings().max_step_size;
@@ -106,8 +119,12 @@ RunResult runOnce(const bullet_sim::ModelDescription& description, double sim_se
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[argc - 1]) == "--ground") {
+    with_ground = true;
+    --argc;
+  }
   if (argc < 2 || argc > 4) {
-    std::cerr << "usage: physics_bench URDF [seconds_of_sim=20] [repeats=3]\n";
+    std::cerr << "usage: physics_bench URDF [seconds_of_sim=20] [repeats=3] [--ground]\n";
     return 2;
   }
   const std::string path = argv[1];

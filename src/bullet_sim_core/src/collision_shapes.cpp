@@ -16,6 +16,26 @@ namespace {
 // should match the described geometry to the millimetre.
 constexpr btScalar kMargin = 0.001;
 
+// A plane whose bounding box is the half-space below it, where its normal is an axis (always, for
+// a floor): Bullet's plane says it is everywhere, so every moving body, however far above the
+// floor, is paired with it in the broadphase and tested every step. Bounded, only bodies that
+// reach the floor's surface are.
+class HalfSpaceShape : public btStaticPlaneShape {
+ public:
+  using btStaticPlaneShape::btStaticPlaneShape;
+  void getAabb(const btTransform& t, btVector3& aabb_min, btVector3& aabb_max) const override {
+    btStaticPlaneShape::getAabb(t, aabb_min, aabb_max);
+    const btVector3 n = t.getBasis() * getPlaneNormal();
+    const btScalar surface = getPlaneConstant() + n.dot(t.getOrigin());  // n . x on the plane
+    for (int axis = 0; axis < 3; ++axis) {
+      if (btFabs(btFabs(n[axis]) - 1) > 1e-9) continue;
+      const btScalar level = n[axis] * surface + n[axis] * getMargin();
+      if (n[axis] > 0) aabb_max[axis] = level;
+      else aabb_min[axis] = level;
+    }
+  }
+};
+
 // See makeCylinderPlaneAlgorithm in the header.
 class CylinderPlaneAlgorithm : public btActivatingCollisionAlgorithm {
  public:
@@ -160,7 +180,7 @@ btCollisionShape* ShapeStore::make(const Geometry& g, bool is_static, const std:
       break;
     case GeometryType::Plane:
       if (!is_static) throw DescriptionError(where + ": a plane is only allowed on a static model");
-      shape = std::make_unique<btStaticPlaneShape>(toBullet(g.plane_normal.normalized()), 0);
+      shape = std::make_unique<HalfSpaceShape>(toBullet(g.plane_normal.normalized()), 0);
       break;
     case GeometryType::Mesh: {
       const TriangleMesh& mesh = loadMesh(g.mesh_file);

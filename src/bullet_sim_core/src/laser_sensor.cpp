@@ -3,6 +3,8 @@
 #include <BulletCollision/NarrowPhaseCollision/btRaycastCallback.h>
 
 #include <algorithm>
+#include <array>
+#include <climits>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -90,6 +92,10 @@ struct Candidate {
   btVector3 size{0, 0, 0};     // Box: half extents; Sphere: x = radius; Cylinder: x = radius, y = half height
   int axis = 2;                // Cylinder: its axis; Plane: unused
   btScalar plane_constant = 0; // Plane: n . x = c, with n in `size`; solid where n . x < c
+  // The beams that can meet the AABB: [first, last] and [first2, last2] (a span across the scan's
+  // ends has two parts); all of them unless the scan is flat.
+  int first = 0, last = INT_MAX, first2 = 1, last2 = 0;
+  bool mayHit(int beam) const { return (beam >= first && beam <= last) || (beam >= first2 && beam <= last2); }
 };
 
 // Slab test of the segment o + t d, t in [0, t_max], against an AABB (inv_d = 1 / d per axis).
@@ -227,6 +233,42 @@ void addLeaves(const btCollisionObject* object, const btCollisionShape* shape, c
   out.push_back(c);
 }
 
+// For a flat scan (beams at yaw min_angle + i * increment in the sensor's xy plane): which beams
+// can meet the candidate's AABB. Seen from the sensor, the box's corners spread over an arc; if
+// its widest gap exceeds half a turn the box lies to one side and only the beams in the rest of
+// the circle (widened by a beam for rounding) can reach it. Otherwise the sensor is over or in
+// the box's footprint, and every beam may.
+void limitToBeamsFacing(Candidate& c, const btVector3& origin, const btMatrix3x3& basis, double min_angle,
+                        double increment, int count) {
+  if (count < 2 || increment <= 0) return;
+  std::array<double, 8> angle;
+  for (int k = 0; k < 8; ++k) {
+    const btVector3 corner((k & 1) ? c.aabb_max.x() : c.aabb_min.x(), (k & 2) ? c.aabb_max.y() : c.aabb_min.y(),
+                           (k & 4) ? c.aabb_max.z() : c.aabb_min.z());
+    const btVector3 p = basis.transpose() * (corner - origin);
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y())) return;  // unbounded (a tilted plane)
+    angle[k] = std::atan2(p.y(), p.x());
+  }
+  std::sort(angle.begin(), angle.end());
+  double gap = angle[0] + 2 * M_PI - angle[7], gap_end = angle[0];  // the gap across +-pi
+  for (int k = 1; k < 8; ++k)
+    if (angle[k] - angle[k - 1] > gap) gap = angle[k] - angle[k - 1], gap_end = angle[k];
+  if (gap <= M_PI) return;
+  // The arc [from, from + width] holds every corner's direction.
+  const double from = gap_end - increment, width = 2 * M_PI - gap + 2 * increment;
+  // Beam i's yaw is min_angle + i * increment; the scan spans at most a turn, so the arc meets it
+  // as shifted by 0 or +-2 pi, at most twice.
+  int spans = 0;
+  for (double shift : {-2 * M_PI, 0.0, 2 * M_PI}) {
+    const double lo = (from + shift - min_angle) / increment, hi = (from + width + shift - min_angle) / increment;
+    const int first = std::max(0, static_cast<int>(std::ceil(lo))), last = std::min(count - 1, static_cast<int>(hi));
+    if (first > last) continue;
+    if (spans++ == 0) c.first = first, c.last = last;
+    else c.first2 = first, c.last2 = last;
+  }
+  if (spans == 0) c.first = 1, c.last = 0;  // the box is outside the scan's angles
+}
+
 // Closest hit of the beam o + t d (unit d), t in [0, t_max], with one candidate.
 bool hitCandidate(const Candidate& c, const btVector3& o, const btVector3& d, btScalar t_max, btScalar& t) {
   const btVector3 dl = c.world_to_local * d;
@@ -318,6 +360,9 @@ void LaserScanner::scan(const btCollisionWorld& world, const btTransform& sensor
   }
   std::sort(candidates.begin(), candidates.end(),
             [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
+  const int count = static_cast<int>(directions_.size());
+  if (pitch_ == 0)
+    for (Candidate& c : candidates) limitToBeamsFacing(c, origin, basis, config_.min_angle, angle_increment_, count);
 
   // 3. Each beam against the candidates, nearest AABB first; once a candidate's AABB is
   // farther than the best hit so far, none of the rest can do better.
@@ -332,6 +377,7 @@ void LaserScanner::scan(const btCollisionWorld& world, const btTransform& sensor
     bool hit = false;
     for (const Candidate& c : candidates) {
       if (c.distance >= best) break;
+      if (!c.mayHit(static_cast<int>(i))) continue;
       btScalar t = 0;
       if (!segmentHitsBox(origin, d, inv_d, c.aabb_min, c.aabb_max, best, t)) continue;
       if (hitCandidate(c, origin, d, best, t) && t < best) {

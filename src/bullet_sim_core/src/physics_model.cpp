@@ -79,7 +79,7 @@ PhysicsModel::~PhysicsModel() {
     if (m) world_.removeMultiBodyConstraint(m.get());
   for (auto& c : constraints_) world_.removeMultiBodyConstraint(c.get());
   for (auto& c : colliders_) world_.removeCollisionObject(c.get());
-  for (auto& o : static_objects_) world_.removeCollisionObject(o.get());
+  for (auto& part : static_parts_) world_.removeCollisionObject(part.object.get());
   if (multibody_) world_.removeMultiBody(multibody_.get());
 }
 
@@ -87,26 +87,27 @@ void PhysicsModel::buildStatic(const Eigen::Isometry3d& pose) {
   // Every link is where the joints at zero put it; nothing moves.
   std::map<std::string, Eigen::Isometry3d> frames{{description_.links.front().name, description_.root_pose}};
   for (const auto& j : description_.joints) frames[j.child] = frames[j.parent] * j.origin;
-  btCompoundShape* compound = shapes_.makeCompound();
-  double mu = 1.0;
+  // One plain collision object per shape, not one compound: Bullet pairs a compound with a compound
+  // through its most expensive algorithm, which re-creates contact manifolds every step for every
+  // link near the ground plane; a plain shape keeps its child algorithms from step to step.
+  static_pose_ = pose;
   for (const auto& link : description_.links) {
     links_[link.name] = LinkRef{-1, frames[link.name]};
     for (const auto& c : link.collisions) {
-      compound->addChildShape(toBullet(frames[link.name] * c.origin),
-                              shapes_.make(c.geometry, true, description_.source + ": <link name='" + link.name + "'>"));
-      mu = 0.5 * (link.mu1 + link.mu2);
+      StaticPart part;
+      part.link = link.name;
+      part.in_model = frames[link.name] * c.origin;
+      part.object = std::make_unique<btCollisionObject>();
+      part.object->setCollisionShape(
+          shapes_.make(c.geometry, true, description_.source + ": <link name='" + link.name + "'>"));
+      part.object->setWorldTransform(toBullet(pose * part.in_model));
+      part.object->setCollisionFlags(part.object->getCollisionFlags() | btCollisionObject::CF_STATIC_OBJECT);
+      part.object->setFriction(0.5 * (link.mu1 + link.mu2));
+      world_.addCollisionObject(part.object.get(), btBroadphaseProxy::StaticFilter,
+                                btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+      static_parts_.push_back(std::move(part));
     }
   }
-  static_pose_ = pose;
-  if (compound->getNumChildShapes() == 0) return;
-  auto object = std::make_unique<btCollisionObject>();
-  object->setCollisionShape(compound);
-  object->setWorldTransform(toBullet(pose));
-  object->setCollisionFlags(object->getCollisionFlags() | btCollisionObject::CF_STATIC_OBJECT);
-  object->setFriction(mu);
-  world_.addCollisionObject(object.get(), btBroadphaseProxy::StaticFilter,
-                            btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
-  static_objects_.push_back(std::move(object));
 }
 
 void PhysicsModel::buildMultiBody(const Eigen::Isometry3d& pose, double step_size, std::vector<std::string>& warnings) {
@@ -235,9 +236,9 @@ void PhysicsModel::buildMultiBody(const Eigen::Isometry3d& pose, double step_siz
 
 void PhysicsModel::updateKinematics() {
   if (!multibody_) {
-    for (auto& o : static_objects_) {
-      o->setWorldTransform(toBullet(static_pose_));
-      world_.updateSingleAabb(o.get());
+    for (auto& part : static_parts_) {
+      part.object->setWorldTransform(toBullet(static_pose_ * part.in_model));
+      world_.updateSingleAabb(part.object.get());
     }
     return;
   }
@@ -251,7 +252,9 @@ void PhysicsModel::updateKinematics() {
 Eigen::Isometry3d PhysicsModel::bodyComPose(int body) const {
   if (!multibody_) return static_pose_;
   if (body < 0) return fromBullet(multibody_->getBaseWorldTransform());
-  return fromBullet(multibody_->getLink(body).m_cachedWorldTransform);
+  // The link's collider is moved with it at the end of every step (and by updateKinematics);
+  // Bullet's m_cachedWorldTransform would need another forward-kinematics pass each step.
+  return fromBullet(multibody_->getLink(body).m_collider->getWorldTransform());
 }
 
 Twist PhysicsModel::bodyComTwist(int body) const {
@@ -327,7 +330,11 @@ Twist PhysicsModel::linkTwist(const std::string& link) const {
 const btCollisionObject* PhysicsModel::linkCollider(const std::string& link) const {
   auto it = links_.find(link);
   if (it == links_.end()) return nullptr;
-  if (!multibody_) return static_objects_.empty() ? nullptr : static_objects_.front().get();
+  if (!multibody_) {
+    for (const auto& part : static_parts_)
+      if (part.link == link) return part.object.get();  // its first shape
+    return nullptr;
+  }
   return it->second.body < 0 ? multibody_->getBaseCollider() : multibody_->getLink(it->second.body).m_collider;
 }
 

@@ -109,6 +109,17 @@ class IsotropicFrictionSolver : public btMultiBodyConstraintSolver {
     }
   }
 };
+// Bullet predicts every link's pose at the end of the step for continuous collision detection,
+// which the simulator does not use (multibody links are not swept): a pass of forward kinematics
+// per step for nothing.
+class DiscreteMultiBodyWorld : public btMultiBodyDynamicsWorld {
+ public:
+  using btMultiBodyDynamicsWorld::btMultiBodyDynamicsWorld;
+  void predictUnconstraintMotion(btScalar time_step) override {
+    btDiscreteDynamicsWorld::predictUnconstraintMotion(time_step);
+  }
+};
+
 }  // namespace
 
 PhysicsWorld::PhysicsWorld(const PhysicsSettings& settings)
@@ -118,7 +129,7 @@ PhysicsWorld::PhysicsWorld(const PhysicsSettings& settings)
       dispatcher_(std::make_unique<btCollisionDispatcher>(collision_config_.get())),
       broadphase_(std::make_unique<btDbvtBroadphase>()),
       solver_(std::make_unique<IsotropicFrictionSolver>()),
-      world_(std::make_unique<btMultiBodyDynamicsWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
+      world_(std::make_unique<DiscreteMultiBodyWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                                          collision_config_.get())) {
   gCalculateCombinedFrictionCallback = &minimumFriction;
   dispatcher_->registerCollisionCreateFunc(CYLINDER_SHAPE_PROXYTYPE, STATIC_PLANE_PROXYTYPE, cylinder_plane_.get());
@@ -138,8 +149,11 @@ void PhysicsWorld::setSettings(const PhysicsSettings& s) {
     throw DescriptionError("physics: real_time_update_rate: expected a rate >= 0 Hz, got " +
                            std::to_string(s.real_time_update_rate));
   if (!s.gravity.allFinite()) throw DescriptionError("physics: gravity: expected three finite numbers");
+  if (s.solver_iterations < 1)
+    throw DescriptionError("physics: solver iters: expected at least 1, got " + std::to_string(s.solver_iterations));
   settings_ = s;
   world_->setGravity(toBullet(s.gravity));
+  world_->getSolverInfo().m_numIterations = s.solver_iterations;
 }
 
 PhysicsModel& PhysicsWorld::addModel(const ModelDescription& description, const Eigen::Isometry3d& pose) {
@@ -183,7 +197,6 @@ void PhysicsWorld::step() {
   for (auto& m : models_) m->beforeStep();
   // maxSubSteps 0: exactly one step of the given size, no interpolation.
   world_->stepSimulation(settings_.max_step_size, 0, settings_.max_step_size);
-  world_->forwardKinematics();  // refresh every link's cached world transform
   for (auto& m : models_) m->afterStep();
   time_ += settings_.max_step_size;
 }

@@ -446,6 +446,20 @@ void parsePhysics(const SdfElement& p, PhysicsSettings& out) {
   out.real_time_factor = p.number("real_time_factor", out.real_time_factor, nonNegative());
   out.real_time_update_rate = p.number("real_time_update_rate", out.real_time_update_rate, nonNegative());
   out.gravity = p.vector3("gravity", out.gravity);  // SDF <= 1.5
+  // The solver's sweeps, from the engine's block Gazebo would use (ODE's unless type says bullet).
+  const std::string engine = p.attribute("type") == "bullet" ? "bullet" : "ode";
+  if (const SdfElement e = p.child(engine.c_str()))
+    if (const SdfElement solver = e.child("solver"))
+      out.solver_iterations = static_cast<int>(solver.integer("iters", out.solver_iterations, 1, 100000));
+}
+
+// World plugins are not loaded; gazebo_ros's own (its API, paths, state) are built into the node.
+void warnAboutWorldPlugin(const SdfElement& plugin, WorldDescription& world) {
+  const std::string library = pluginLibraryName(plugin.attribute("filename"));
+  for (const char* built_in : {"libgazebo_ros_api_plugin.so", "libgazebo_ros_paths_plugin.so", "libgazebo_ros_state.so"})
+    if (library == built_in) return;
+  world.warnings.push_back(plugin.source() + ": " + plugin.path() + ": world plugin '" + library +
+                           "' is not simulated by bullet_sim; the world is loaded without it");
 }
 
 WorldDescription parseWorld(const Ctx& c, const SdfElement& root) {
@@ -475,7 +489,8 @@ WorldDescription parseWorld(const Ctx& c, const SdfElement& root) {
     } else if (e.tag() == "include") {
       placed = parseInclude(c, e);
     }
-    // Lights, scene, gui, state, plugins and the like have no counterpart here.
+    if (e.tag() == "plugin") warnAboutWorldPlugin(e, world);
+    // Lights, scene, gui, state and the like have no counterpart here.
     if (!placed) continue;
     if (!names.insert(placed->model.name).second)
       e.fail("a model named '" + placed->model.name + "' is already in the world; give it another <name>");

@@ -98,6 +98,20 @@ TEST(SdfWorldParser, GravityInsidePhysicsAndDefaults) {
   EXPECT_TRUE(w.models.empty());
 }
 
+TEST(SdfWorldParser, SolverItersComeFromTheEngineInUse) {
+  const ResourceResolver r;
+  auto iters = [&](const std::string& physics) {
+    return parseWorldString(worldWith(physics), "mem.world", "", r).physics.solver_iterations;
+  };
+  EXPECT_EQ(iters(""), 50);  // SDF's default, and PyBullet's
+  EXPECT_EQ(iters("<physics type='ode'><ode><solver><iters>20</iters></solver></ode></physics>"), 20);
+  EXPECT_EQ(iters("<physics><ode><solver><iters>30</iters></solver></ode></physics>"), 30);  // ode by default
+  EXPECT_EQ(iters("<physics type='bullet'><bullet><solver><iters>70</iters></solver></bullet>"
+                  "<ode><solver><iters>20</iters></solver></ode></physics>"),
+            70);
+  EXPECT_EQ(iters("<physics type='ode'><bullet><solver><iters>70</iters></solver></bullet></physics>"), 50);
+}
+
 TEST(SdfWorldParser, EmptyWorldUsesBuiltInModels) {
   const ResourceResolver nothing;  // ground_plane and sun need no file on disk
   const WorldDescription w = parseWorldFile(kData + "/../../../bullet_sim/worlds/empty.world", nothing);
@@ -141,6 +155,16 @@ TEST(SdfWorldParser, IncludeFromGazeboModelPath) {
   EXPECT_TRUE(a.model.joints.empty());
   expectPose(a.pose, {1, 2, 0}, 0, 0, 0);                           // the include's pose replaces the model's
   expectPose(model(w, "box_b").pose, {0, 0, 0.25}, 0, 0, 0);         // no include pose: the model's own
+}
+
+TEST(SdfWorldParser, WorldPluginsAreSaidUnlessBuiltIn) {
+  // box_room.world's libgazebo_ros_state.so is part of the node's /gazebo API.
+  EXPECT_TRUE(boxRoom().warnings.empty());
+  const WorldDescription w =
+      parseWorldString(worldWith("<plugin name='wind' filename='libWindPlugin.so'/>"), "mem.world", "", ResourceResolver());
+  ASSERT_EQ(w.warnings.size(), 1u);
+  EXPECT_EQ(w.warnings[0], "mem.world: <world name='w'>/<plugin name='wind' filename='libWindPlugin.so'>: world plugin "
+                           "'libWindPlugin.so' is not simulated by bullet_sim; the world is loaded without it");
 }
 
 TEST(SdfWorldParser, ALinkKeepsItsOwnFrame) {
@@ -370,6 +394,8 @@ TEST(SdfWorldParserErrors, MoreCases) {
                  {"<model name='m'>/<pose>: expected 6 numbers 'x y z roll pitch yaw', got '1 2 3'"});
   expectMentions(worldError("<physics><max_step_size>0</max_step_size></physics>"),
                  {"<physics>/<max_step_size>: expected a number > 0, got '0'"});
+  expectMentions(worldError("<physics><ode><solver><iters>0</iters></solver></ode></physics>"),
+                 {"<physics>/<ode>/<solver>/<iters>: expected", "got '0'"});
   expectMentions(worldError("<include><uri>model://test_box</uri></include><include><uri>model://test_box</uri></include>"),
                  {"a model named 'test_box' is already in the world"});
   expectMentions(worldError("<include><name>x</name></include>"), {"<include>: missing required element <uri>"});

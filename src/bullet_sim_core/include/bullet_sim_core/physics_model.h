@@ -49,7 +49,8 @@ class PhysicsModel {
   bool hasLink(const std::string& link) const { return links_.count(link) > 0; }
   Eigen::Isometry3d linkPose(const std::string& link) const;
   Twist linkTwist(const std::string& link) const;  // of the link frame's origin
-  // Collision object that carries this link (after merging), or nullptr; sensors ignore it.
+  // Collision object that carries this link (after merging; a static model's link: its first
+  // shape's), or nullptr; sensors ignore it.
   const btCollisionObject* linkCollider(const std::string& link) const;
   // Adds a world-frame force/torque at `point` (world) to the link for the next step only.
   void addLinkWrench(const std::string& link, const Eigen::Vector3d& force, const Eigen::Vector3d& torque,
@@ -96,7 +97,12 @@ class PhysicsModel {
   std::vector<double> pending_effort_, applied_effort_;
   std::unique_ptr<btMultiBody> multibody_;
   std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders_;
-  std::vector<std::unique_ptr<btCollisionObject>> static_objects_;
+  struct StaticPart {  // one collision shape of a static model
+    std::unique_ptr<btCollisionObject> object;
+    Eigen::Isometry3d in_model = Eigen::Isometry3d::Identity();
+    std::string link;
+  };
+  std::vector<StaticPart> static_parts_;
   Eigen::Isometry3d static_pose_ = Eigen::Isometry3d::Identity();  // a static model's frame
   std::vector<std::unique_ptr<btMultiBodyConstraint>> constraints_;
   std::vector<std::unique_ptr<btMultiBodyJointMotor>> motors_;  // per joint, created on first use
