@@ -1,29 +1,30 @@
 #!/usr/bin/python3
-"""Real-time factor of the whole bullet_sim_node with /clock and a 720-beam 40 Hz laser (issue 2).
+"""Real-time factor of the whole bullet_sim_node against PyBullet's step rate, in one run (issue 10).
 
-  bench_node_rtf.py [URDF] [--seconds S]
+  bench_node_rtf.py [--seconds S] [--rounds N] [--world empty|no_ground|both] [--no-pybullet]
 
-Starts its own roscore on a free port (ROS_MASTER_URI=http://127.0.0.1:PORT, so it never
-touches a running ROS system), then `rosrun bullet_sim bullet_sim_node` (the empty world:
-ground plane + sun, 1 ms steps, real_time_factor 1), spawns the benchmark arm with
-`rosrun bullet_sim spawn_model -urdf -file URDF -model arm5`, and subscribes to /arm5/scan
-(so the laser really casts its rays: it only does with a subscriber) and /clock. It then
-measures, over S seconds of wall time each (default 10):
+For each world, starts its own roscore on a free port (so it never touches a running ROS system)
+and brings up src/bullet_sim/bench/arm5_node_bench.launch: gazebo_ros's empty_world.launch (/clock
+at its pub_clock_frequency of 100 Hz of sim time) with either the empty world (a ground plane) or
+bench/no_ground.world (nothing: as physics_bench and PyBullet have it), the benchmark arm of
+physics_bench and bench_pybullet.py (5 joints, a 720-beam 40 Hz laser) with ros_control running the
+same PD law on every joint at every 1 ms step, and /arm5/joint_states at 50 Hz. It subscribes to
+/clock, /arm5/scan and /arm5/joint_states (the laser only casts its rays while someone listens), and
+measures over S wall seconds (default 8):
 
-  1. real time:    the world as loaded (real_time_factor 1)                -> expect ~1.0
-  2. unthrottled:  /gazebo/set_physics_properties with max_update_rate 0
-                   (time_step 0.001 and gravity kept)                       -> as fast as it runs
+  1. real time:    the world as loaded (real_time_factor 1)                 -> expect 1.0
+  2. N rounds (default 3) of: PyBullet on the same arm (bench_pybullet.py, one run of 10 s of sim
+     time, with the simulation paused), then the node unthrottled (max_update_rate 0). The
+     machine's speed drifts, so each round compares the two measured back to back, and the median
+     ratio is reported. The node's steps/s is its factor times 1000 (1 ms steps).
 
-and prints the achieved factor (sim time advanced / wall time, from the /clock messages) and
-the scan rate received (scans per second of sim time, expected 40, and per wall second).
-The arm is passive in the node (no controller plugin): it folds under gravity onto its joint
-limits and the ground plane within the first second, before measuring starts.
-
-Every process it starts is stopped at the end, also on errors and Ctrl-C.
+then stops the node, which prints where its loop's time went (--timing). PyBullet comes from
+`scripts/setup --bench`. Every process it starts is stopped at the end, also on errors and Ctrl-C.
 Run with Debian's /usr/bin/python3 and the workspace sourced (scripts/env.sh).
 Output (parsed by scripts/bench):
   node real-time factor (real time): X
   node real-time factor (unthrottled): Y
+  node / PyBullet steps per second (WORLD, median of N rounds): R
 """
 import argparse
 import os
@@ -39,7 +40,12 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_URDF = os.path.join(HERE, '..', 'src', 'bullet_sim_core', 'bench', 'arm5.urdf')
+BENCH_LAUNCH = os.path.join(HERE, '..', 'src', 'bullet_sim', 'bench', 'arm5_node_bench.launch')
+# gazebo_ros's empty world (with the ground plane), and the arm alone, as physics_bench and PyBullet have it.
+WORLDS = {'empty': os.path.join(HERE, '..', 'src', 'bullet_sim', 'worlds', 'empty.world'),
+          'no_ground': os.path.join(HERE, '..', 'src', 'bullet_sim', 'bench', 'no_ground.world')}
 SCAN_TOPIC = '/arm5/scan'
+JOINT_STATES_TOPIC = '/arm5/joint_states'
 
 
 class Processes:
@@ -94,6 +100,7 @@ class Recorder:
         self.lock = threading.Lock()
         self.clock = []  # (monotonic wall s, sim s)
         self.scans = []  # (monotonic wall s, header stamp s)
+        self.joint_states = []  # (monotonic wall s, header stamp s)
 
     def on_clock(self, msg):  # rosgraph_msgs/Clock: time clock = uint32 secs, uint32 nsecs
         secs, nsecs = struct.unpack_from('<II', msg._buff, 0)
@@ -104,6 +111,11 @@ class Recorder:
         secs, nsecs = struct.unpack_from('<II', msg._buff, 4)
         with self.lock:
             self.scans.append((time.monotonic(), secs + 1e-9 * nsecs))
+
+    def on_joint_states(self, msg):  # sensor_msgs/JointState: Header first
+        secs, nsecs = struct.unpack_from('<II', msg._buff, 4)
+        with self.lock:
+            self.joint_states.append((time.monotonic(), secs + 1e-9 * nsecs))
 
     def window(self, start, end):
         with self.lock:
@@ -127,8 +139,11 @@ def measure(recorder, seconds, label):
     in_span = [s for s in scans if clock[0][1] < s[1] <= clock[-1][1]]
     scan_hz_sim = len(in_span) / sim if sim > 0 else 0.0
     scan_hz_wall = len(scans) / (end - start)
+    with recorder.lock:
+        joint_states = [j for j in recorder.joint_states if clock[0][1] < j[1] <= clock[-1][1]]
     return {'label': label, 'rtf': rtf, 'wall': wall, 'sim': sim, 'clock_msgs': len(clock),
-            'scans': len(scans), 'scan_hz_sim': scan_hz_sim, 'scan_hz_wall': scan_hz_wall}
+            'scans': len(scans), 'scan_hz_sim': scan_hz_sim, 'scan_hz_wall': scan_hz_wall,
+            'joint_states_hz_sim': len(joint_states) / sim if sim > 0 else 0.0}
 
 
 def report(r):
@@ -136,6 +151,8 @@ def report(r):
     print('  %.2f s sim in %.2f s wall, %d /clock msgs (%.0f/s wall); %d scans on %s = %.1f Hz sim time '
           '(%.1f Hz wall)' % (r['sim'], r['wall'], r['clock_msgs'], r['clock_msgs'] / r['wall'], r['scans'], SCAN_TOPIC,
                              r['scan_hz_sim'], r['scan_hz_wall']))
+    if r['joint_states_hz_sim']:
+        print('  %s at %.1f Hz sim time' % (JOINT_STATES_TOPIC, r['joint_states_hz_sim']))
     sys.stdout.flush()
 
 
@@ -152,64 +169,65 @@ def wait_until(predicate, timeout, what, procs):
     raise RuntimeError('timed out after %.0f s waiting for %s' % (timeout, what))
 
 
+def pybullet_rate(seconds):
+    """PyBullet's steps/s on the same arm (bench_pybullet.py, one timed run)."""
+    python = os.environ.get('BENCH_PYTHON', os.path.join(HERE, '..', '.venv', 'bin', 'python'))
+    done = subprocess.run([python, os.path.join(HERE, 'bench_pybullet.py'), DEFAULT_URDF, str(seconds), '1'],
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    rate = [float(line.split(':')[1]) for line in done.stdout.splitlines() if line.startswith('pybullet steps/s:')]
+    if done.returncode != 0 or not rate:
+        raise RuntimeError('bench_pybullet.py failed (status %d; scripts/setup --bench installs PyBullet):\n%s'
+                           % (done.returncode, done.stdout[-2000:]))
+    return rate[0]
+
+
 def run(args, procs):
-    port = free_port()
-    env = dict(os.environ)
-    env['ROS_MASTER_URI'] = 'http://127.0.0.1:%d' % port
-    # Everything is local: loopback only (ROS_HOSTNAME would take precedence over ROS_IP).
-    env['ROS_IP'] = '127.0.0.1'
-    env.pop('ROS_HOSTNAME', None)
-    env['ROS_HOME'] = procs.log_dir  # logs of this run stay in its temporary folder
-    env['ROS_LOG_DIR'] = os.path.join(procs.log_dir, 'ros_log')
-    os.environ.clear()
-    os.environ.update(env)  # for rospy in this process
-
-    import rosgraph
-    procs.start('roscore', ['roscore', '-p', str(port)], env)
-    master = rosgraph.Master('/bench_node_rtf', master_uri=env['ROS_MASTER_URI'])
-
-    def master_up():
-        try:
-            master.getPid()
-            return True
-        except Exception:  # noqa: BLE001 - not up yet
-            return False
-    wait_until(master_up, 30, 'roscore on port %d' % port, procs)
-
-    # Our node starts before the simulator sets /use_sim_time, so rospy keeps wall time and adds
-    # no /clock subscriber of its own: the only readers are the two below.
     import rospy
-    from gazebo_msgs.srv import GetPhysicsProperties, SetPhysicsProperties
-    rospy.init_node('bench_node_rtf', anonymous=True, disable_signals=True)
-
-    procs.start('bullet_sim_node', ['rosrun', 'bullet_sim', 'bullet_sim_node'], env)
+    from controller_manager_msgs.srv import ListControllers
+    from std_srvs.srv import Empty
+    master = launch_on_private_master(procs, 'bench_node_rtf', [BENCH_LAUNCH, 'world_name:=' + WORLDS[args.world],
+                                                                'extra_gazebo_args:=--timing'])
     rec = Recorder()
     rospy.Subscriber('/clock', rospy.AnyMsg, rec.on_clock, queue_size=1000, tcp_nodelay=True)
-    wait_until(lambda: rosgraph_service_up(master, '/gazebo/spawn_urdf_model'), 60,
-               'service /gazebo/spawn_urdf_model of bullet_sim_node', procs)
-
-    spawn = subprocess.run(['rosrun', 'bullet_sim', 'spawn_model', '-urdf', '-file', args.urdf, '-model', 'arm5'],
-                           env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=60)
-    if spawn.returncode != 0:
-        raise RuntimeError('spawn_model failed (status %d):\n%s' % (spawn.returncode, spawn.stdout.decode(errors='replace')))
     rospy.Subscriber(SCAN_TOPIC, rospy.AnyMsg, rec.on_scan, queue_size=1000, tcp_nodelay=True)
-    wait_until(lambda: len(rec.scans) > 0, 30, 'the first scan on %s' % SCAN_TOPIC, procs)
+    rospy.Subscriber(JOINT_STATES_TOPIC, rospy.AnyMsg, rec.on_joint_states, queue_size=1000, tcp_nodelay=True)
+    wait_until(lambda: rosgraph_service_up(master, '/arm5/controller_manager/list_controllers'), 90,
+               'the arm\'s controller manager', procs)
+    lister = rospy.ServiceProxy('/arm5/controller_manager/list_controllers', ListControllers)
+    wait_until(lambda: sum(c.state == 'running' for c in lister().controller) == 6, 60, 'six running controllers',
+               procs)
+    wait_until(lambda: len(rec.scans) > 0 and len(rec.joint_states) > 0, 30, 'a scan and a joint state', procs)
     time.sleep(1.0)  # let the arm settle and the connections warm up
 
-    results = [measure(rec, args.seconds, 'real time')]
-    report(results[-1])
-
-    get_props = rospy.ServiceProxy('/gazebo/get_physics_properties', GetPhysicsProperties)
-    set_props = rospy.ServiceProxy('/gazebo/set_physics_properties', SetPhysicsProperties)
-    current = get_props()
-    reply = set_props(time_step=0.001, max_update_rate=0.0, gravity=current.gravity, ode_config=current.ode_config)
-    if not reply.success:
-        raise RuntimeError('set_physics_properties refused max_update_rate 0: ' + reply.status_message)
-    time.sleep(1.0)  # past the switch
-    results.append(measure(rec, args.seconds, 'unthrottled'))
-    report(results[-1])
+    print('world: %s' % args.world)
+    report(measure(rec, args.seconds, 'real time'))
+    unthrottle()
+    pause = rospy.ServiceProxy('/gazebo/pause_physics', Empty)
+    unpause = rospy.ServiceProxy('/gazebo/unpause_physics', Empty)
+    # The machine's speed drifts (a shared VM): each round measures PyBullet with the simulation
+    # paused, then the node, and compares the two.
+    ratios = []
+    for _ in range(args.rounds):
+        rate = None
+        if not args.no_pybullet:
+            pause()
+            rate = pybullet_rate(10)
+            unpause()
+        time.sleep(0.5)  # past the switch
+        result = measure(rec, args.seconds, 'unthrottled')
+        report(result)
+        if rate:
+            ratios.append(result['rtf'] / 0.001 / rate)
+            print('  PyBullet just before: %.0f steps/s; node %.0f steps/s = %.2f x PyBullet'
+                  % (rate, result['rtf'] / 0.001, ratios[-1]))
+    if ratios:
+        print('node / PyBullet steps per second (%s, median of %d rounds): %.2f  (target >= 2.5)'
+              % (args.world, len(ratios), sorted(ratios)[len(ratios) // 2]))
     rospy.signal_shutdown('done')
-    return results
+    procs.stop_all()  # the node prints where its loop's time went as it exits
+    log = procs.log_tail('launch', 40)
+    if 'bullet_sim loop timing' in log:
+        print('bullet_sim loop timing' + log.split('bullet_sim loop timing', 1)[1])
 
 
 def launch_on_private_master(procs, name, launch_args):
@@ -282,14 +300,14 @@ def rosgraph_service_up(master, name):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
-    parser.add_argument('urdf', nargs='?', default=DEFAULT_URDF, help='the arm (default: bench/arm5.urdf)')
-    parser.add_argument('--seconds', type=float, default=10.0, help='wall seconds per measurement (default 10)')
+    parser.add_argument('--seconds', type=float, default=8.0, help='wall seconds per measurement (default 8)')
+    parser.add_argument('--rounds', type=int, default=3, help='unthrottled measurements, each after PyBullet\'s')
+    parser.add_argument('--world', choices=sorted(WORLDS) + ['both'], default='both')
+    parser.add_argument('--no-pybullet', action='store_true', help='skip the PyBullet comparison')
     args = parser.parse_args()
-    args.urdf = os.path.abspath(args.urdf)
-    if not os.path.isfile(args.urdf):
-        print('bench_node_rtf: no such URDF: %s' % args.urdf, file=sys.stderr)
-        return 2
-
+    if args.world == 'both':  # one process per world: rospy cannot move to another master
+        return max(subprocess.call([sys.executable, os.path.abspath(__file__)] + sys.argv[1:] + ['--world', world])
+                   for world in ('empty', 'no_ground'))
     return run_with_processes('bench_node_rtf', lambda procs: run(args, procs))
 
 

@@ -1,13 +1,17 @@
 // bullet_sim_node: the simulator, started like gzserver:
-//   rosrun bullet_sim bullet_sim_node [-u] [--verbose] [-e ENGINE] [WORLD_FILE]
+//   rosrun bullet_sim bullet_sim_node [-u] [--verbose] [--timing] [GZSERVER_OPTIONS] [WORLD_FILE]
 //   rosrun bullet_sim bullet_sim_node --list-plugins
 // -u starts paused. Without a world file the empty world (ground plane + sun) is loaded.
+// --timing prints, at exit, where the loop's time went (see loop_timing.h).
 // --list-plugins prints the plugin libraries models can name, and exits.
+// gzserver's other options (-e bullet, -s libfoo.so, --seed 3, ...) are accepted with a warning.
 // A world file that cannot be read exits with status 1 and a message naming the problem.
 #include <ros/package.h>
 #include <ros/ros.h>
 
+#include <algorithm>
 #include <iostream>
+#include <vector>
 
 #include "bullet_sim/simulator.h"
 #include "bullet_sim_core/description_error.h"
@@ -16,10 +20,16 @@
 
 namespace {
 
+// gzserver's options that take a value.
+const std::vector<std::string> kOptionsWithValue = {
+    "-e", "--physics", "-s", "--server-plugin", "-p", "--play", "-o", "--profile", "--seed", "--iters",
+    "--record_encoding", "--record_path", "--record_period", "--record_filter", "-g", "--gui-plugin"};
+
 struct Arguments {
   bool paused = false;
   bool verbose = false;
   bool list_plugins = false;
+  bool timing = false;
   std::string world_file;
 };
 
@@ -32,10 +42,14 @@ bool parseArguments(const std::vector<std::string>& args, Arguments& out, std::s
       out.verbose = true;
     } else if (a == "--list-plugins") {
       out.list_plugins = true;
-    } else if (a == "-e" || a == "--physics") {
-      ++i;  // gzserver's physics engine choice; there is only Bullet here
+    } else if (a == "--timing") {
+      out.timing = true;
+    } else if (std::find(kOptionsWithValue.begin(), kOptionsWithValue.end(), a) != kOptionsWithValue.end()) {
+      // gzserver's options that take a value (physics engine, plugins, recording, ...): no meaning here.
+      ROS_WARN_STREAM("bullet_sim_node: ignoring option '" << a << (i + 1 < args.size() ? " " + args[i + 1] : "")
+                                                           << "'");
+      ++i;
     } else if (!a.empty() && a[0] == '-') {
-      // Other gzserver flags (e.g. -s plugin) have no meaning here.
       ROS_WARN_STREAM("bullet_sim_node: ignoring option '" << a << "'");
     } else if (out.world_file.empty()) {
       out.world_file = a;
@@ -67,6 +81,7 @@ int main(int argc, char** argv) {
   ros::NodeHandle gazebo("/gazebo");
   bullet_sim::SimulatorOptions options;
   options.paused = arguments.paused;
+  options.timing = arguments.timing;
   gazebo.param("pub_clock_frequency", options.pub_clock_frequency, 0.0);
   // A node started alone still gives sim time to everyone who asks for it.
   if (!ros::param::has("/use_sim_time")) ros::param::set("/use_sim_time", true);
@@ -77,6 +92,7 @@ int main(int argc, char** argv) {
   if (world_file.empty()) world_file = ros::package::getPath("bullet_sim") + "/worlds/empty.world";
   try {
     world = bullet_sim::parseWorldFile(world_file, resolver);
+    for (const std::string& warning : world.warnings) ROS_WARN_STREAM("bullet_sim: " << warning);
     bullet_sim::Simulator simulator(world, resolver, options);
     ROS_INFO_STREAM("bullet_sim: world '" << world.name << "' from " << world_file << " with "
                                           << world.models.size() << " models, step "

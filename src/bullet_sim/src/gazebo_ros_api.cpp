@@ -56,8 +56,8 @@ GazeboRosApi::GazeboRosApi(Simulator& sim) : sim_(sim), node_("/gazebo") {
       n.advertiseService("reset_world", &GazeboRosApi::resetWorld, this),
   };
   set_model_state_sub_ = n.subscribe("set_model_state", 10, &GazeboRosApi::setModelStateTopic, this);
-  model_states_pub_ = n.advertise<gazebo_msgs::ModelStates>("model_states", 1);
-  link_states_pub_ = n.advertise<gazebo_msgs::LinkStates>("link_states", 1);
+  model_states_pub_.advertise<gazebo_msgs::ModelStates>(n, "model_states", 1);
+  link_states_pub_.advertise<gazebo_msgs::LinkStates>(n, "link_states", 1);
   sim_.before_step = [this](const ros::Time& now) { applyTimedForces(now); };
 }
 
@@ -333,7 +333,7 @@ bool GazeboRosApi::getPhysicsProperties(gazebo_msgs::GetPhysicsProperties::Reque
   const btContactSolverInfo& info = sim_.physics().bulletWorld().getSolverInfo();
   res.ode_config.auto_disable_bodies = false;
   res.ode_config.sor_pgs_precon_iters = 0;
-  res.ode_config.sor_pgs_iters = info.m_numIterations;
+  res.ode_config.sor_pgs_iters = s.solver_iterations;
   res.ode_config.sor_pgs_w = info.m_sor;
   res.ode_config.sor_pgs_rms_error_tol = info.m_leastSquaresResidualThreshold;
   res.ode_config.contact_surface_layer = info.m_linearSlop;
@@ -352,6 +352,7 @@ bool GazeboRosApi::setPhysicsProperties(gazebo_msgs::SetPhysicsProperties::Reque
   s.max_step_size = req.time_step;
   s.real_time_update_rate = req.max_update_rate;
   s.gravity = toEigen(req.gravity);
+  if (req.ode_config.sor_pgs_iters > 0) s.solver_iterations = static_cast<int>(req.ode_config.sor_pgs_iters);
   try {
     sim_.physics().setSettings(s);
   } catch (const DescriptionError& e) {
@@ -359,8 +360,6 @@ bool GazeboRosApi::setPhysicsProperties(gazebo_msgs::SetPhysicsProperties::Reque
     res.status_message = std::string("SetPhysicsProperties: ") + e.what();
     return true;
   }
-  if (req.ode_config.sor_pgs_iters > 0)
-    sim_.physics().bulletWorld().getSolverInfo().m_numIterations = static_cast<int>(req.ode_config.sor_pgs_iters);
   sim_.setPaused(sim_.paused());  // restart real-time tracking at the new rate
   res.success = true;
   res.status_message = "SetPhysicsProperties: physics properties set";
@@ -499,8 +498,8 @@ bool GazeboRosApi::setModelConfiguration(gazebo_msgs::SetModelConfiguration::Req
 void GazeboRosApi::afterStep(const ros::Time&) { publishStates(false); }
 
 void GazeboRosApi::publishStates(bool force) {
-  const bool models = model_states_pub_.getNumSubscribers() > 0;
-  const bool links = link_states_pub_.getNumSubscribers() > 0;
+  const bool models = model_states_pub_.hasSubscribers();
+  const bool links = link_states_pub_.hasSubscribers();
   if (!models && !links) return;
   // Gazebo publishes every step; far beyond real time that would only flood subscribers.
   const ros::WallTime wall = ros::WallTime::now();

@@ -9,7 +9,7 @@ const ros::WallDuration kPeriod(0.1);
 
 SceneMarkers::SceneMarkers(PhysicsWorld& world) : world_(world) {
   ros::NodeHandle gazebo("/gazebo");
-  publisher_ = gazebo.advertise<visualization_msgs::MarkerArray>("scene_markers", 1);
+  publisher_.advertise<visualization_msgs::MarkerArray>(gazebo, "scene_markers", 1);
 }
 
 void appendModelMarkers(const PhysicsModel& model, const ros::Time& stamp, visualization_msgs::MarkerArray& out) {
@@ -61,7 +61,7 @@ void appendModelMarkers(const PhysicsModel& model, const ros::Time& stamp, visua
 }
 
 void SceneMarkers::publish(bool force) {
-  if (publisher_.getNumSubscribers() == 0) return;
+  if (!publisher_.hasSubscribers()) return;
   const ros::WallTime now = ros::WallTime::now();
   if (!force && now - last_ < kPeriod) return;
   last_ = now;

@@ -3,6 +3,8 @@
 #include <ros/callback_queue.h>
 #include <rosgraph_msgs/Clock.h>
 
+#include <cstdio>
+
 #include "bullet_sim/gazebo_ros_api.h"
 #include "bullet_sim/scene_markers.h"
 #include "bullet_sim_core/description_error.h"
@@ -10,8 +12,8 @@
 
 namespace bullet_sim {
 namespace {
-// Wall-clock floor between /clock messages: when running much faster than real time, a
-// message per step would only load every sim-time subscriber.
+// With pub_clock_frequency 0 (every step), the wall-clock floor between /clock messages: when
+// running much faster than real time, a message per step would only load every sim-time subscriber.
 const ros::WallDuration kMinClockWallPeriod(0.0005);
 // While paused, /clock repeats the frozen time so that late starters learn it.
 const ros::WallDuration kPausedClockPeriod(0.1);
@@ -23,6 +25,7 @@ Simulator::Simulator(const WorldDescription& world, const ResourceResolver& reso
       physics_(world.physics),
       paused_(options.paused),
       options_(options),
+      timing_(options.timing),
       node_("/") {
   clock_publisher_ = node_.advertise<rosgraph_msgs::Clock>("/clock", 10);
   for (const PlacedModel& placed : world.models) spawn(placed.model, placed.pose, "");
@@ -31,7 +34,13 @@ Simulator::Simulator(const WorldDescription& world, const ResourceResolver& reso
   publishClock(true);
 }
 
-Simulator::~Simulator() = default;
+Simulator::~Simulator() {
+  if (timing_.enabled()) {
+    const std::string report = timing_.report(physics_.time());
+    ROS_INFO_STREAM(report);
+    std::fputs(report.c_str(), stdout);
+  }
+}
 
 void Simulator::spawn(const ModelDescription& model, const Eigen::Isometry3d& pose, const std::string& robot_namespace) {
   PhysicsModel& added = physics_.addModel(model, pose);
@@ -59,7 +68,7 @@ void Simulator::setPaused(bool paused) {
 void Simulator::resetWorld() {
   physics_.resetModels();
   for (auto& [name, plugins] : plugins_)
-    for (auto& p : plugins) p->reset();
+    for (LoadedPlugin& p : plugins) p.plugin->reset();
   pace_wall_start_ = ros::WallTime();
 }
 
@@ -70,19 +79,34 @@ void Simulator::resetSimulation() {
   publishClock(true);
 }
 
+// With --timing, every part's wall time is recorded; otherwise the laps cost a branch each.
 void Simulator::stepOnce() {
+  timing_.mark();
   const ros::Time before = now();
   if (before_step) before_step(before);
+  timing_.lap("/gazebo apply_joint_effort, apply_body_wrench");
   const double dt = physics_.settings().max_step_size;
-  for (auto& [name, plugins] : plugins_)
-    for (auto& p : plugins) p->beforeStep(before, dt);
+  for (auto& [name, plugins] : plugins_) {
+    for (LoadedPlugin& p : plugins) {
+      p.plugin->beforeStep(before, dt);
+      timing_.lap(p.label, ", before the step");
+    }
+  }
   physics_.step();
+  timing_.lap("physics step");
   const ros::Time after = now();
-  for (auto& [name, plugins] : plugins_)
-    for (auto& p : plugins) p->afterStep(after);
+  for (auto& [name, plugins] : plugins_) {
+    for (LoadedPlugin& p : plugins) {
+      p.plugin->afterStep(after);
+      timing_.lap(p.label, ", after the step");
+    }
+  }
   api_->afterStep(after);
   scene_markers_->publish();
+  timing_.lap("/gazebo model_states, link_states, scene_markers");
   publishClock(false);
+  timing_.lap("/clock");
+  timing_.countStep();
 }
 
 void Simulator::runSteps(int n) {
@@ -91,16 +115,19 @@ void Simulator::runSteps(int n) {
 
 void Simulator::publishClock(bool force) {
   const ros::Time t = now();
-  const ros::WallTime wall = ros::WallTime::now();
   if (!force) {
-    if (options_.pub_clock_frequency > 0 && (t - last_clock_).toSec() < 1.0 / options_.pub_clock_frequency) return;
-    if (wall - last_clock_wall_ < kMinClockWallPeriod) return;
+    if (options_.pub_clock_frequency > 0) {
+      // gazebo_ros: /clock at pub_clock_frequency Hz of sim time, whatever the speed.
+      if ((t - last_clock_).toSec() < 1.0 / options_.pub_clock_frequency) return;
+    } else if (ros::WallTime::now() - last_clock_wall_ < kMinClockWallPeriod) {
+      return;  // "every step" (upstream's default), but no faster than a subscriber can read
+    }
   }
   rosgraph_msgs::Clock msg;
   msg.clock = t;
   clock_publisher_.publish(msg);
   last_clock_ = t;
-  last_clock_wall_ = wall;
+  last_clock_wall_ = ros::WallTime::now();
 }
 
 void Simulator::run() {
@@ -115,7 +142,9 @@ void Simulator::run() {
       }
       continue;
     }
+    timing_.mark();
     queue.callAvailable();
+    timing_.lap("ROS callbacks (services, subscriptions)");
     if (paused_) continue;
     stepOnce();
 

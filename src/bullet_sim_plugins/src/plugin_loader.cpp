@@ -18,10 +18,9 @@ std::string knownPlugins() {
 
 }  // namespace
 
-std::vector<std::unique_ptr<ModelPlugin>> loadModelPlugins(PhysicsWorld& world, PhysicsModel& model,
-                                                           const std::string& spawn_namespace) {
+std::vector<LoadedPlugin> loadModelPlugins(PhysicsWorld& world, PhysicsModel& model, const std::string& spawn_namespace) {
   const ModelDescription& description = model.description();
-  std::vector<std::unique_ptr<ModelPlugin>> plugins;
+  std::vector<LoadedPlugin> plugins;
   std::set<std::string> told;  // unknown libraries already reported for this model
 
   auto load = [&](const PluginDescription& plugin, const SensorDescription* sensor) {
@@ -34,7 +33,8 @@ std::vector<std::unique_ptr<ModelPlugin>> loadModelPlugins(PhysicsWorld& world, 
                                   << "); bullet_sim does not simulate it. Known plugins: " << knownPlugins());
       return;
     }
-    plugins.push_back((*factory)(PluginContext{world, model, plugin, sensor, spawn_namespace}));
+    const PluginContext context{world, model, plugin, sensor, spawn_namespace};
+    plugins.push_back({context.label() + (sensor ? " (sensor '" + sensor->name + "')" : ""), (*factory)(context)});
   };
 
   for (const SensorDescription& sensor : description.sensors) {

@@ -61,13 +61,14 @@ TEST(PluginRegistry, ANewSensorPluginRunsFromItsRegistrationLine) {
   PhysicsWorld world;
   PhysicsModel& model = world.addModel(box, raised(2.0));
   WarningCollector log;
-  std::vector<std::unique_ptr<ModelPlugin>> plugins = loadModelPlugins(world, model, "");
+  std::vector<LoadedPlugin> plugins = loadModelPlugins(world, model, "");
   ASSERT_EQ(plugins.size(), 1u);
+  EXPECT_EQ(plugins[0].label, "model 'box': libexample_altimeter.so (sensor 'alt')");
   EXPECT_TRUE(log.warnings.empty());
   altimeterReadings().clear();
   for (int i = 0; i < 500; ++i) {  // 0.5 s of free fall
     world.step();
-    for (auto& p : plugins) p->afterStep(ros::Time(world.time()));
+    for (auto& p : plugins) p.plugin->afterStep(ros::Time(world.time()));
   }
   // 10 Hz for 0.5 s, each the height + 0.5: from 2.5 m down by g t^2 / 2 = 1.225 m.
   ASSERT_EQ(altimeterReadings().size(), 5u);

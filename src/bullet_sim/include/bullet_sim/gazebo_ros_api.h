@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "bullet_sim/simulator.h"
+#include "bullet_sim_plugins/counted_publisher.h"
 
 namespace bullet_sim {
 
@@ -81,7 +82,7 @@ class GazeboRosApi {
   ros::NodeHandle node_;  // /gazebo
   std::vector<ros::ServiceServer> services_;
   ros::Subscriber set_model_state_sub_;
-  ros::Publisher model_states_pub_, link_states_pub_;
+  CountedPublisher model_states_pub_, link_states_pub_;
   ros::WallTime last_states_wall_;
   std::vector<TimedJointEffort> joint_efforts_;
   std::vector<TimedWrench> wrenches_;

@@ -6,6 +6,7 @@
 #include <visualization_msgs/MarkerArray.h>
 
 #include "bullet_sim_core/physics_world.h"
+#include "bullet_sim_plugins/counted_publisher.h"
 
 namespace bullet_sim {
 
@@ -16,7 +17,7 @@ class SceneMarkers {
 
  private:
   PhysicsWorld& world_;
-  ros::Publisher publisher_;
+  CountedPublisher publisher_;
   ros::WallTime last_;
 };
 

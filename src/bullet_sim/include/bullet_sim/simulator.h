@@ -10,9 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "bullet_sim/loop_timing.h"
 #include "bullet_sim_core/physics_world.h"
 #include "bullet_sim_core/resource_resolver.h"
-#include "bullet_sim_plugins/model_plugin.h"
+#include "bullet_sim_plugins/plugin_loader.h"
 
 namespace bullet_sim {
 
@@ -22,6 +23,7 @@ class SceneMarkers;
 struct SimulatorOptions {
   bool paused = false;
   double pub_clock_frequency = 0.0;  // Hz of sim time; 0: every step (Gazebo's default)
+  bool timing = false;               // time the loop's parts and print where the time went at exit
 };
 
 class Simulator {
@@ -58,7 +60,8 @@ class Simulator {
   PhysicsWorld physics_;
   bool paused_;
   SimulatorOptions options_;
-  std::map<std::string, std::vector<std::unique_ptr<ModelPlugin>>> plugins_;  // by model name
+  std::map<std::string, std::vector<LoadedPlugin>> plugins_;  // by model name
+  LoopTiming timing_;
   ros::NodeHandle node_;
   ros::Publisher clock_publisher_;
   ros::Time last_clock_;

@@ -50,6 +50,20 @@ class GazeboApiTest(unittest.TestCase):
         self.assertTrue(props.success)
         self.assertIn('ground_plane', props.model_names)
 
+    def test_physics_properties_report_and_change_the_solver_sweeps(self):
+        physics = self.gz.get_physics_properties()
+        self.assertAlmostEqual(physics.time_step, 0.001, places=9)  # empty.world
+        self.assertEqual(physics.ode_config.sor_pgs_iters, 50)      # SDF's default iters
+        config = physics.ode_config
+        config.sor_pgs_iters = 20
+        done = self.gz.set_physics_properties(time_step=physics.time_step, max_update_rate=physics.max_update_rate,
+                                              gravity=physics.gravity, ode_config=config)
+        self.assertTrue(done.success, done.status_message)
+        self.assertEqual(self.gz.get_physics_properties().ode_config.sor_pgs_iters, 20)
+        config.sor_pgs_iters = 50
+        self.gz.set_physics_properties(time_step=physics.time_step, max_update_rate=physics.max_update_rate,
+                                       gravity=physics.gravity, ode_config=config)
+
     def test_set_then_get_model_state_round_trips(self):
         self.assertTrue(self.gz.spawn_urdf('box', BOX, pose(0, 0, 1)).success)
         target = pose(1.5, -2.0, 3.25, yaw=0.7)

@@ -11,8 +11,12 @@
 
 namespace bullet_sim {
 
+struct LoadedPlugin {
+  std::string label;  // "model 'm': libgazebo_ros_laser.so (sensor 'lidar')", for messages and timing
+  std::unique_ptr<ModelPlugin> plugin;
+};
+
 // Throws DescriptionError (naming the plugin or sensor) for a block that cannot be honoured.
-std::vector<std::unique_ptr<ModelPlugin>> loadModelPlugins(PhysicsWorld& world, PhysicsModel& model,
-                                                           const std::string& spawn_namespace);
+std::vector<LoadedPlugin> loadModelPlugins(PhysicsWorld& world, PhysicsModel& model, const std::string& spawn_namespace);
 
 }  // namespace bullet_sim
