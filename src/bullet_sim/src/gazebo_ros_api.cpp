@@ -522,8 +522,8 @@ void GazeboRosApi::publishStates(bool force) {
       }
     }
   }
-  if (models) model_states_pub_.publish(model_states);
-  if (links) link_states_pub_.publish(link_states);
+  if (models) model_states_pub_.publish(std::move(model_states));
+  if (links) link_states_pub_.publish(std::move(link_states));
 }
 
 }  // namespace bullet_sim

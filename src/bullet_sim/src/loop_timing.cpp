@@ -2,13 +2,21 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <vector>
+#include <cstring>
+#include <utility>
 
 namespace bullet_sim {
 
 void LoopTiming::record(std::string_view part, const char* detail) {
   const Clock::time_point now = Clock::now();
-  seconds_[std::string(part) + detail] += std::chrono::duration<double>(now - mark_).count();
+  const auto is = [&](const Part& p) { return p.name == part && std::strcmp(p.detail.c_str(), detail) == 0; };
+  std::size_t i = next_;
+  if (i >= parts_.size() || !is(parts_[i])) {
+    i = std::find_if(parts_.begin(), parts_.end(), is) - parts_.begin();
+    if (i == parts_.size()) parts_.push_back({std::string(part), detail, 0.0});
+  }
+  parts_[i].seconds += std::chrono::duration<double>(now - mark_).count();
+  next_ = i + 1;
   if (first_ == Clock::time_point()) first_ = mark_;
   last_ = now;
   mark_ = now;
@@ -18,9 +26,9 @@ std::string LoopTiming::report(double sim_seconds) const {
   if (steps_ == 0) return "bullet_sim loop timing: no step was taken\n";
   std::vector<std::pair<double, std::string>> parts;
   double measured = 0.0;
-  for (const auto& [part, seconds] : seconds_) {
-    parts.emplace_back(seconds, part);
-    measured += seconds;
+  for (const Part& p : parts_) {
+    parts.emplace_back(p.seconds, p.name + p.detail);
+    measured += p.seconds;
   }
   std::sort(parts.rbegin(), parts.rend());
   const double wall = std::chrono::duration<double>(last_ - first_).count();

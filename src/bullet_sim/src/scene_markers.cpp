@@ -71,7 +71,7 @@ void SceneMarkers::publish(bool force) {
   markers.markers.push_back(clear);
   const ros::Time stamp(world_.time());
   for (const std::string& name : world_.modelNames()) appendModelMarkers(*world_.findModel(name), stamp, markers);
-  publisher_.publish(markers);
+  publisher_.publish(std::move(markers));
 }
 
 }  // namespace bullet_sim

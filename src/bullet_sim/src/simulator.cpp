@@ -9,6 +9,7 @@
 #include "bullet_sim/scene_markers.h"
 #include "bullet_sim_core/description_error.h"
 #include "bullet_sim_plugins/plugin_loader.h"
+#include "publish_thread/publish_thread.h"
 
 namespace bullet_sim {
 namespace {
@@ -125,7 +126,7 @@ void Simulator::publishClock(bool force) {
   }
   rosgraph_msgs::Clock msg;
   msg.clock = t;
-  clock_publisher_.publish(msg);
+  publish_thread::publish(clock_publisher_, msg);
   last_clock_ = t;
   last_clock_wall_ = ros::WallTime::now();
 }

@@ -44,6 +44,28 @@ TEST(LoopTiming, ReportsEachPartPerStepLargestFirst) {
   EXPECT_LE(numberBefore(report, " us per step measured"), wall_us_per_step) << report;
 }
 
+TEST(LoopTiming, APartLappedTwiceInAStepIsOneLine) {
+  using namespace std::chrono_literals;
+  LoopTiming timing(true);
+  for (int i = 0; i < 3; ++i) {
+    timing.mark();
+    std::this_thread::sleep_for(1ms);
+    timing.lap("callbacks");
+    std::this_thread::sleep_for(1ms);
+    timing.lap(std::string("model 'a': plugin"), ", before the step");
+    std::this_thread::sleep_for(1ms);
+    timing.lap("callbacks");  // out of the usual order: found by name, not by position
+    timing.countStep();
+  }
+  const std::string report = timing.report(0.003);
+  const size_t first = report.find("callbacks");
+  ASSERT_NE(first, std::string::npos) << report;
+  EXPECT_EQ(report.find("callbacks", first + 1), std::string::npos) << report;
+  // Twice a millisecond per step, at least.
+  EXPECT_GE(numberBefore(report.substr(0, first + 9), " us/step"), 2000) << report;
+  EXPECT_LT(first, report.find("model 'a': plugin, before the step")) << report;
+}
+
 TEST(LoopTiming, DisabledRecordsNothing) {
   LoopTiming timing(false);
   timing.mark();

@@ -13,6 +13,7 @@
 #include "bullet_sim_core/scene_renderer.h"
 #include "bullet_sim_plugins/plugin_registry.h"
 #include "bullet_sim_plugins/ros_names.h"
+#include "publish_thread/publish_thread.h"
 
 namespace bullet_sim {
 
@@ -151,11 +152,11 @@ void CameraPlugin::afterStep(const ros::Time& now) {
     encodeImage(frame_, config_.encoding, image_.data);  // a copy, or mono8's conversion
     if (noise_) noise_->apply(image_.data);
     image_.header.stamp = now;
-    image_publisher_.publish(image_);
+    publish_thread::publish(image_publisher_, image_);
   }
   if (want_info) {
     info_.header.stamp = now;
-    info_publisher_.publish(info_);
+    publish_thread::publish(info_publisher_, info_);
   }
 }
 

@@ -11,6 +11,7 @@
 #include "bullet_sim_core/laser_sensor.h"
 #include "bullet_sim_plugins/plugin_registry.h"
 #include "bullet_sim_plugins/ros_names.h"
+#include "publish_thread/publish_thread.h"
 
 namespace bullet_sim {
 
@@ -83,7 +84,7 @@ void LaserPlugin::afterStep(const ros::Time& now) {
   scanner_.scan(world_.bulletWorld(), sensor, ignore, rng_, message_.ranges);
   message_.intensities.assign(message_.ranges.size(), 0.0f);
   message_.header.stamp = now;
-  publisher_.publish(message_);
+  publish_thread::publish(publisher_, message_);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/JointState.h>
+#include <tf2_msgs/TFMessage.h>
 
 #include <cmath>
 #include <sstream>
@@ -11,6 +12,7 @@
 #include "bullet_sim_core/description_error.h"
 #include "bullet_sim_plugins/ros_conversions.h"
 #include "bullet_sim_plugins/wheel_drive_plugin.h"
+#include "publish_thread/publish_thread.h"
 
 namespace bullet_sim {
 namespace {
@@ -79,7 +81,7 @@ WheelDrivePlugin::WheelDrivePlugin(PhysicsModel& model, WheelDriveSettings setti
   odometry_frame_ = resolveFrame(tf_prefix_, settings_.odometry_frame);
   base_frame_ = resolveFrame(tf_prefix_, settings_.robot_base_frame);
   if ((settings_.publish_odometry && settings_.publish_odom_tf) || settings_.publish_wheel_tf)
-    tf_broadcaster_ = std::make_unique<tf2_ros::TransformBroadcaster>();
+    tf_publisher_ = ros::NodeHandle().advertise<tf2_msgs::TFMessage>("/tf", 100);  // as tf2_ros's broadcaster
   if (settings_.odometry_source == OdometrySource::Encoder) readEncoders();  // the reference angles
 
   std::string wheels;
@@ -172,7 +174,7 @@ void WheelDrivePlugin::afterStep(const ros::Time& now) {
 }
 
 void WheelDrivePlugin::publish(const ros::Time& now) {
-  std::vector<geometry_msgs::TransformStamped> transforms;
+  tf2_msgs::TFMessage tf;
   if (settings_.publish_odometry) {
     nav_msgs::Odometry odom;
     odom.header.stamp = now;
@@ -206,19 +208,19 @@ void WheelDrivePlugin::publish(const ros::Time& now) {
       odom.pose.covariance[i * 7] = settings_.pose_covariance[i];
       odom.twist.covariance[i * 7] = settings_.twist_covariance[i];
     }
-    odometry_publisher_.publish(odom);
-    if (settings_.publish_odom_tf) transforms.push_back(toTransformMsg(pose, now, odometry_frame_, base_frame_));
+    publish_thread::publish(odometry_publisher_, odom);
+    if (settings_.publish_odom_tf) tf.transforms.push_back(toTransformMsg(pose, now, odometry_frame_, base_frame_));
   }
   if (settings_.publish_wheel_tf) {
     for (const auto* side : {&right_, &left_}) {
       for (const Wheel& w : *side) {
         const Eigen::Isometry3d relative = model_.linkPose(w.parent_link).inverse() * model_.linkPose(w.child_link);
-        transforms.push_back(toTransformMsg(relative, now, resolveFrame(tf_prefix_, w.parent_link),
-                                            resolveFrame(tf_prefix_, w.child_link)));
+        tf.transforms.push_back(toTransformMsg(relative, now, resolveFrame(tf_prefix_, w.parent_link),
+                                               resolveFrame(tf_prefix_, w.child_link)));
       }
     }
   }
-  if (!transforms.empty() && tf_broadcaster_) tf_broadcaster_->sendTransform(transforms);
+  if (!tf.transforms.empty() && tf_publisher_) publish_thread::publish(tf_publisher_, std::move(tf));
   if (settings_.publish_wheel_joint_state) {
     sensor_msgs::JointState state;
     state.header.stamp = now;
@@ -229,7 +231,7 @@ void WheelDrivePlugin::publish(const ros::Time& now) {
         state.velocity.push_back(model_.jointVelocity(w.joint));
       }
     }
-    joint_state_publisher_.publish(state);
+    publish_thread::publish(joint_state_publisher_, std::move(state));
   }
 }
 

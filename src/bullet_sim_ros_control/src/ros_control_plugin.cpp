@@ -127,7 +127,7 @@ void RosControlPlugin::beforeStep(const ros::Time& now, double dt) {
 void RosControlPlugin::applyCommands(double dt) {
   for (Actuated& a : actuated_) {
     const sim_control::JointData& d = *a.data;
-    if (!manager_->isDriven(d.name)) {
+    if (!d.driven) {
       // No running controller: the joint is free (upstream would keep applying the last command).
       model_.clearJointMotor(a.physics_joint);
       continue;

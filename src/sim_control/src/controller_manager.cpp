@@ -166,6 +166,7 @@ void ControllerManager::updateDriven() {
   for (const auto& e : controllers_)
     if (e.state == State::Running)
       for (const auto& claimed : e.controller->claimedResources()) driven_.insert(claimed.joints.begin(), claimed.joints.end());
+  for (JointData& joint : hw_.joints()) joint.driven = driven_.count(joint.name) > 0;
 }
 
 bool ControllerManager::onLoad(controller_manager_msgs::LoadController::Request& req,

@@ -227,6 +227,7 @@ class RosControlTest(unittest.TestCase):
 
     def test_diff_drive_controller_drives_the_base(self):
         state = lambda: self.gz.state('diffbot').pose.position
+        rospy.wait_for_service('/diffbot/controller_manager/list_controllers', 30)  # spawned by the launch file
         self.assertTrue(wait_until(lambda: rospy.ServiceProxy('/diffbot/controller_manager/list_controllers',
                                                               ListControllers)().controller, 30))
         start = state()

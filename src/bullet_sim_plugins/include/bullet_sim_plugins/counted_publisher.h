@@ -6,6 +6,8 @@
 // callbacks, which arrive through the node's callback queue (so on the simulator's thread).
 #include <ros/ros.h>
 
+#include "publish_thread/publish_thread.h"
+
 #include <memory>
 #include <string>
 
@@ -21,9 +23,10 @@ class CountedPublisher {
         [count](const ros::SingleSubscriberPublisher&) { --*count; });
   }
   bool hasSubscribers() const { return *subscribers_ > 0; }
+  // From the process's publishing thread (publish_thread.h).
   template <class Message>
-  void publish(const Message& message) const {
-    publisher_.publish(message);
+  void publish(Message message) const {
+    publish_thread::publish(publisher_, std::move(message));
   }
   std::string getTopic() const { return publisher_.getTopic(); }
 

@@ -39,7 +39,6 @@
 // - A wheel that is not a revolute or continuous joint of the model is a DescriptionError at spawn.
 #include <geometry_msgs/Twist.h>
 #include <ros/ros.h>
-#include <tf2_ros/transform_broadcaster.h>
 
 #include <array>
 #include <memory>
@@ -104,7 +103,7 @@ class WheelDrivePlugin : public ModelPlugin {
   ros::NodeHandle node_;
   ros::Subscriber command_subscriber_;
   ros::Publisher odometry_publisher_, joint_state_publisher_;
-  std::unique_ptr<tf2_ros::TransformBroadcaster> tf_broadcaster_;
+  ros::Publisher tf_publisher_;  // /tf, from the publishing thread as every message here
   std::string odometry_frame_, base_frame_, tf_prefix_;
 
   DriveCommand command_;

@@ -37,6 +37,9 @@ struct JointData {
   // Command in the interface's unit. The hardware starts it at "hold": zero effort, the
   // joint's position at start-up, or zero velocity.
   double command = 0.0;
+  // Whether a running controller claims the joint (kept by the controller manager; the
+  // hardware leaves the others undriven). A flag, so the simulator need not look names up every step.
+  bool driven = false;
 };
 
 class RobotHW {

@@ -1,6 +1,9 @@
 #pragma once
 // Pieces the controllers share: a command slot written by ROS callbacks and read by update(),
 // a log throttle, ros_controllers' joint-limit handling, and the JointControllerState publisher.
+// Controllers publish from update() through publish_thread::publish (the process's publishing
+// thread), as ros_controllers do through realtime_tools' RealtimePublisher: update() never waits
+// on roscpp.
 #include <control_msgs/JointControllerState.h>
 #include <ros/node_handle.h>
 #include <ros/console.h>
@@ -14,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "publish_thread/publish_thread.h"
 #include "sim_control/pid.h"
 #include "sim_control/robot_hw.h"
 
@@ -127,7 +131,7 @@ class ControllerStatePublisher {
     msg.d = pid.gains().d;
     msg.i_clamp = pid.gains().i_clamp_max;  // ros_controllers reports i_max here
     msg.antiwindup = pid.gains().antiwindup;
-    pub_.publish(msg);
+    publish_thread::publish(pub_, std::move(msg));
   }
 
  private:

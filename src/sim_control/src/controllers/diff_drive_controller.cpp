@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "publish_thread/publish_thread.h"
 #include "sim_control/controller.h"
 #include "sim_control/controller_registry.h"
 #include "sim_control/diff_drive_kinematics.h"
@@ -512,7 +513,7 @@ void DiffDriveController::update(const ros::Time& time, const ros::Duration& per
     out.header.frame_id = base_frame_id_;
     out.twist.linear.x = cmd.lin;
     out.twist.angular.z = cmd.ang;
-    cmd_vel_pub_.publish(out);
+    publish_thread::publish(cmd_vel_pub_, out);
   }
 
   const diff_drive::WheelVelocities w = diff_drive::inverseKinematics(cmd.lin, cmd.ang, ws_, lwr_, rwr_);
@@ -534,7 +535,7 @@ void DiffDriveController::publishOdometry(const ros::Time& time) {
   odom_msg_.pose.pose.orientation = q;
   odom_msg_.twist.twist.linear.x = odometry_.linear();
   odom_msg_.twist.twist.angular.z = odometry_.angular();
-  odom_pub_.publish(odom_msg_);
+  publish_thread::publish(odom_pub_, odom_msg_);
 
   if (enable_odom_tf_) {
     geometry_msgs::TransformStamped& t = tf_msg_.transforms[0];
@@ -543,7 +544,7 @@ void DiffDriveController::publishOdometry(const ros::Time& time) {
     t.transform.translation.y = odometry_.y();
     t.transform.translation.z = 0.0;
     t.transform.rotation = q;
-    tf_odom_pub_.publish(tf_msg_);
+    publish_thread::publish(tf_odom_pub_, tf_msg_);
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include <sstream>
 
+#include "publish_thread/publish_thread.h"
 #include "sim_control/controller_registry.h"
 #include "sim_control/params.h"
 
@@ -56,7 +57,7 @@ class JointStateController : public Controller {
       msg_.velocity[k] = joints_[k]->velocity;
       msg_.effort[k] = joints_[k]->effort;
     }
-    pub_.publish(msg_);
+    publish_thread::publish(pub_, msg_);
   }
 
  private:

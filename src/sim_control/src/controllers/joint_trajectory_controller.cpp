@@ -449,7 +449,7 @@ void JointTrajectoryController::publishState(const ros::Time& time) {
     state_msg_.error.positions[i] = error_[i].position;
     state_msg_.error.velocities[i] = error_[i].velocity;
   }
-  state_pub_.publish(state_msg_);
+  publish_thread::publish(state_pub_, state_msg_);
 }
 
 namespace {
