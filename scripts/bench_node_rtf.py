@@ -8,17 +8,19 @@ and brings up src/bullet_sim/bench/arm5_node_bench.launch: gazebo_ros's empty_wo
 at its pub_clock_frequency of 100 Hz of sim time) with either the empty world (a ground plane) or
 bench/no_ground.world (nothing: as physics_bench and PyBullet have it), the benchmark arm of
 physics_bench and bench_pybullet.py (5 joints, a 720-beam 40 Hz laser) with ros_control running the
-same PD law on every joint at every 1 ms step, and /arm5/joint_states at 50 Hz. It subscribes to
-/clock, /arm5/scan and /arm5/joint_states (the laser only casts its rays while someone listens), and
-measures over S wall seconds (default 8):
+same PD law on every joint at every 1 ms step, and /arm5/joint_states at 50 Hz. A C++ listener
+(bullet_sim/topic_arrivals) subscribes to /clock, /arm5/scan and /arm5/joint_states (the laser only
+casts its rays while someone listens) and records every arrival; this script is no ROS node (so
+nothing else of it listens to /clock) and measures windows of S wall seconds (default 8):
 
   1. real time:    the world as loaded (real_time_factor 1)                 -> expect 1.0
-  2. N rounds (default 3) of: PyBullet on the same arm (bench_pybullet.py, one run of 10 s of sim
+  2. N rounds (default 3) of: PyBullet on the same arm (bench_pybullet.py, one run of 60 s of sim
      time, with the simulation paused), then the node unthrottled (max_update_rate 0). The
      machine's speed drifts, so each round compares the two measured back to back, and the median
      ratio is reported. The node's steps/s is its factor times 1000 (1 ms steps).
 
-then stops the node, which prints where its loop's time went (--timing). PyBullet comes from
+then brings the node up again with --timing for one unthrottled window and prints where its loop's
+time went (timing costs the loop about a tenth, so the measured rounds run without it). PyBullet comes from
 `scripts/setup --bench`. Every process it starts is stopped at the end, also on errors and Ctrl-C.
 Run with Debian's /usr/bin/python3 and the workspace sourced (scripts/env.sh).
 Output (parsed by scripts/bench):
@@ -31,11 +33,9 @@ import os
 import shutil
 import signal
 import socket
-import struct
 import subprocess
 import sys
 import tempfile
-import threading
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -70,21 +70,27 @@ class Processes:
         except OSError:
             return ''
 
+    def named(self, name):
+        return next(proc for n, proc in self.procs if n == name)
+
+    def stop(self, proc):
+        """SIGINT like Ctrl-C, then TERM, then KILL; forgotten once stopped."""
+        for sig, wait in ((signal.SIGINT, 5.0), (signal.SIGTERM, 3.0), (signal.SIGKILL, 3.0)):
+            if proc.poll() is not None:
+                break
+            try:
+                os.killpg(proc.pid, sig)  # the group of this child only (start_new_session)
+            except ProcessLookupError:
+                break
+            try:
+                proc.wait(wait)
+            except subprocess.TimeoutExpired:
+                pass
+        self.procs = [(n, p) for n, p in self.procs if p is not proc]
+
     def stop_all(self):
-        # Newest first (the node before the master); SIGINT like Ctrl-C, then TERM, then KILL.
-        for name, proc in reversed(self.procs):
-            for sig, wait in ((signal.SIGINT, 5.0), (signal.SIGTERM, 3.0), (signal.SIGKILL, 3.0)):
-                if proc.poll() is not None:
-                    break
-                try:
-                    os.killpg(proc.pid, sig)  # the group of this child only (start_new_session)
-                except ProcessLookupError:
-                    break
-                try:
-                    proc.wait(wait)
-                except subprocess.TimeoutExpired:
-                    pass
-        self.procs = []
+        for _, proc in reversed(self.procs):  # newest first (the node before the master)
+            self.stop(proc)
 
 
 def free_port():
@@ -93,56 +99,36 @@ def free_port():
         return s.getsockname()[1]
 
 
-class Recorder:
-    """/clock and scan arrivals as (wall time, stamp), read straight from the serialized bytes."""
+class Arrivals:
+    """/clock, scan and joint-state arrivals as (monotonic wall s, sim stamp s), recorded by the C++
+    listener bullet_sim/topic_arrivals (a Python subscriber would compete with the node for the CPU)
+    and read once it has stopped."""
 
-    def __init__(self):
-        self.lock = threading.Lock()
-        self.clock = []  # (monotonic wall s, sim s)
-        self.scans = []  # (monotonic wall s, header stamp s)
-        self.joint_states = []  # (monotonic wall s, header stamp s)
-
-    def on_clock(self, msg):  # rosgraph_msgs/Clock: time clock = uint32 secs, uint32 nsecs
-        secs, nsecs = struct.unpack_from('<II', msg._buff, 0)
-        with self.lock:
-            self.clock.append((time.monotonic(), secs + 1e-9 * nsecs))
-
-    def on_scan(self, msg):  # sensor_msgs/LaserScan: Header first: uint32 seq, time stamp
-        secs, nsecs = struct.unpack_from('<II', msg._buff, 4)
-        with self.lock:
-            self.scans.append((time.monotonic(), secs + 1e-9 * nsecs))
-
-    def on_joint_states(self, msg):  # sensor_msgs/JointState: Header first
-        secs, nsecs = struct.unpack_from('<II', msg._buff, 4)
-        with self.lock:
-            self.joint_states.append((time.monotonic(), secs + 1e-9 * nsecs))
-
-    def window(self, start, end):
-        with self.lock:
-            clock = [c for c in self.clock if start <= c[0] <= end]
-            scans = [s for s in self.scans if start <= s[0] <= end]
-        return clock, scans
+    def __init__(self, path):
+        self.clock, self.scans, self.joint_states = [], [], []
+        by_kind = {'clock': self.clock, 'scan': self.scans, 'joint_states': self.joint_states}
+        with open(path) as f:
+            for line in f:
+                kind, wall, stamp = line.split()
+                by_kind[kind].append((float(wall), float(stamp)))
 
 
-def measure(recorder, seconds, label):
-    start = time.monotonic()
-    time.sleep(seconds)
-    end = time.monotonic()
-    clock, scans = recorder.window(start, end)
+def measure(arrivals, start, end, label):
+    """The real-time factor and topic rates over the wall-time window [start, end]."""
+    clock = [c for c in arrivals.clock if start <= c[0] <= end]
+    scans = [s for s in arrivals.scans if start <= s[0] <= end]
     if len(clock) < 2:
-        raise RuntimeError('%s: fewer than 2 /clock messages in %.0f s of wall time: is the simulation running?' %
-                           (label, seconds))
+        raise RuntimeError('%s: fewer than 2 /clock messages in %.0f s of wall time: was the simulation running?' %
+                           (label, end - start))
     wall = clock[-1][0] - clock[0][0]
     sim = clock[-1][1] - clock[0][1]
     rtf = sim / wall if wall > 0 else float('nan')
-    # Scans stamped inside the sim-time span of the window.
+    # Scans and joint states stamped inside the sim-time span of the window.
     in_span = [s for s in scans if clock[0][1] < s[1] <= clock[-1][1]]
-    scan_hz_sim = len(in_span) / sim if sim > 0 else 0.0
-    scan_hz_wall = len(scans) / (end - start)
-    with recorder.lock:
-        joint_states = [j for j in recorder.joint_states if clock[0][1] < j[1] <= clock[-1][1]]
+    joint_states = [j for j in arrivals.joint_states if clock[0][1] < j[1] <= clock[-1][1]]
     return {'label': label, 'rtf': rtf, 'wall': wall, 'sim': sim, 'clock_msgs': len(clock),
-            'scans': len(scans), 'scan_hz_sim': scan_hz_sim, 'scan_hz_wall': scan_hz_wall,
+            'scans': len(scans), 'scan_hz_sim': len(in_span) / sim if sim > 0 else 0.0,
+            'scan_hz_wall': len(scans) / (end - start),
             'joint_states_hz_sim': len(joint_states) / sim if sim > 0 else 0.0}
 
 
@@ -181,40 +167,57 @@ def pybullet_rate(seconds):
     return rate[0]
 
 
-def run(args, procs):
+def bring_up(procs, master, name, arrivals_file):
+    """Starts the listener; waits for the arm's six controllers to run and for a first message on
+    each topic; returns the listener's process."""
     import rospy
     from controller_manager_msgs.srv import ListControllers
-    from std_srvs.srv import Empty
-    master = launch_on_private_master(procs, 'bench_node_rtf', [BENCH_LAUNCH, 'world_name:=' + WORLDS[args.world],
-                                                                'extra_gazebo_args:=--timing'])
-    rec = Recorder()
-    rospy.Subscriber('/clock', rospy.AnyMsg, rec.on_clock, queue_size=1000, tcp_nodelay=True)
-    rospy.Subscriber(SCAN_TOPIC, rospy.AnyMsg, rec.on_scan, queue_size=1000, tcp_nodelay=True)
-    rospy.Subscriber(JOINT_STATES_TOPIC, rospy.AnyMsg, rec.on_joint_states, queue_size=1000, tcp_nodelay=True)
+    listener = procs.start(name + '_listener', ['rosrun', 'bullet_sim', 'topic_arrivals', arrivals_file, SCAN_TOPIC,
+                                                JOINT_STATES_TOPIC], os.environ)
     wait_until(lambda: rosgraph_service_up(master, '/arm5/controller_manager/list_controllers'), 90,
                'the arm\'s controller manager', procs)
     lister = rospy.ServiceProxy('/arm5/controller_manager/list_controllers', ListControllers)
     wait_until(lambda: sum(c.state == 'running' for c in lister().controller) == 6, 60, 'six running controllers',
                procs)
-    wait_until(lambda: len(rec.scans) > 0 and len(rec.joint_states) > 0, 30, 'a scan and a joint state', procs)
+    wait_until(lambda: os.path.exists(arrivals_file + '.ready'), 30, 'a clock, a scan and a joint state', procs)
     time.sleep(1.0)  # let the arm settle and the connections warm up
+    return listener
 
-    print('world: %s' % args.world)
-    report(measure(rec, args.seconds, 'real time'))
+
+def run(args, procs):
+    import rospy
+    from std_srvs.srv import Empty
+    launch_args = [BENCH_LAUNCH, 'world_name:=' + WORLDS[args.world]]
+    master = launch_on_private_master(procs, 'bench_node_rtf', launch_args, node=False)
+    arrivals_file = os.path.join(procs.log_dir, 'arrivals.txt')
+    listener = bring_up(procs, master, 'rounds', arrivals_file)
+
+    # Windows of wall time to measure, with PyBullet's steps/s measured just before each.
+    windows = [('real time', time.monotonic(), None)]
+    time.sleep(args.seconds)
+    windows[-1] += (time.monotonic(),)
     unthrottle()
     pause = rospy.ServiceProxy('/gazebo/pause_physics', Empty)
     unpause = rospy.ServiceProxy('/gazebo/unpause_physics', Empty)
     # The machine's speed drifts (a shared VM): each round measures PyBullet with the simulation
     # paused, then the node, and compares the two.
-    ratios = []
     for _ in range(args.rounds):
         rate = None
         if not args.no_pybullet:
             pause()
-            rate = pybullet_rate(10)
+            rate = pybullet_rate(60)  # about a second of wall time
             unpause()
         time.sleep(0.5)  # past the switch
-        result = measure(rec, args.seconds, 'unthrottled')
+        windows.append(('unthrottled', time.monotonic(), rate))
+        time.sleep(args.seconds)
+        windows[-1] += (time.monotonic(),)
+    procs.stop(listener)  # it writes what it recorded as it exits
+    arrivals = Arrivals(arrivals_file)
+
+    print('world: %s' % args.world)
+    ratios = []
+    for label, start, rate, end in windows:
+        result = measure(arrivals, start, end, label)
         report(result)
         if rate:
             ratios.append(result['rtf'] / 0.001 / rate)
@@ -223,16 +226,25 @@ def run(args, procs):
     if ratios:
         print('node / PyBullet steps per second (%s, median of %d rounds): %.2f  (target >= 2.5)'
               % (args.world, len(ratios), sorted(ratios)[len(ratios) // 2]))
-    rospy.signal_shutdown('done')
-    procs.stop_all()  # the node prints where its loop's time went as it exits
-    log = procs.log_tail('launch', 40)
+    sys.stdout.flush()
+
+    # Where the loop's time goes: the same again with --timing (its clock reads cost the loop about
+    # a tenth, so the rounds above run without it), unthrottled for one window.
+    procs.stop(procs.named('launch'))
+    timed = procs.start('timed_launch', ['roslaunch'] + launch_args + ['extra_gazebo_args:=--timing'], os.environ)
+    listener = bring_up(procs, master, 'timed', os.path.join(procs.log_dir, 'timed_arrivals.txt'))
+    unthrottle()
+    time.sleep(args.seconds)
+    procs.stop(listener)
+    procs.stop(timed)  # the node prints where its loop's time went as it exits
+    log = procs.log_tail('timed_launch', 40)
     if 'bullet_sim loop timing' in log:
-        print('bullet_sim loop timing' + log.split('bullet_sim loop timing', 1)[1])
+        print('bullet_sim loop timing (a separate run with --timing)' + log.split('bullet_sim loop timing', 1)[1])
 
 
-def launch_on_private_master(procs, name, launch_args):
-    """A roscore of our own on a free port, then `roslaunch LAUNCH_ARGS` against it, and this process
-    made a ROS node there. Returns the master (rosgraph.Master). The environment is changed for good:
+def launch_on_private_master(procs, name, launch_args, node=True):
+    """A roscore of our own on a free port, then `roslaunch LAUNCH_ARGS` against it, and (if node) this
+    process made a ROS node there (service calls need none). Returns the master (rosgraph.Master). The environment is changed for good:
     call once per process."""
     port = free_port()
     env = dict(os.environ, ROS_MASTER_URI='http://127.0.0.1:%d' % port, ROS_IP='127.0.0.1',
@@ -246,7 +258,8 @@ def launch_on_private_master(procs, name, launch_args):
     master = rosgraph.Master('/' + name, master_uri=env['ROS_MASTER_URI'])
     wait_until(lambda: rosgraph_service_up(master, '/rosout/get_loggers'), 30, 'roscore', procs)
     procs.start('launch', ['roslaunch'] + list(launch_args), env)
-    rospy.init_node(name, anonymous=True, disable_signals=True)
+    if node:
+        rospy.init_node(name, anonymous=True, disable_signals=True)
     return master
 
 
