@@ -104,7 +104,15 @@ class PhysicsModel {
   };
   std::vector<StaticPart> static_parts_;
   Eigen::Isometry3d static_pose_ = Eigen::Isometry3d::Identity();  // a static model's frame
-  std::vector<std::unique_ptr<btMultiBodyConstraint>> constraints_;
+  std::vector<std::unique_ptr<btMultiBodyConstraint>> constraints_;  // always in the world
+  // A joint limit is in the solver only while its joint is near it (updateLimits()).
+  struct Limit {
+    std::unique_ptr<btMultiBodyConstraint> constraint;
+    int joint = -1;  // index into joints_
+    bool in_world = false;
+  };
+  std::vector<Limit> limits_;
+  void updateLimits();
   std::vector<std::unique_ptr<btMultiBodyJointMotor>> motors_;  // per joint, created on first use
   double step_size_ = 0.001;
 };
