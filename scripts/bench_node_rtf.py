@@ -11,10 +11,10 @@ physics_bench and bench_pybullet.py (5 joints, a 720-beam 40 Hz laser) with ros_
 same PD law on every joint at every 1 ms step, and /arm5/joint_states at 50 Hz. A C++ listener
 (bullet_sim/topic_arrivals) subscribes to /clock, /arm5/scan and /arm5/joint_states (the laser only
 casts its rays while someone listens) and records every arrival; this script is no ROS node (so
-nothing else of it listens to /clock) and measures windows of S wall seconds (default 8):
+nothing else of it listens to /clock) and measures windows of S wall seconds (default 3):
 
   1. real time:    the world as loaded (real_time_factor 1)                 -> expect 1.0
-  2. N rounds (default 3) of: PyBullet on the same arm (bench_pybullet.py, one run of 60 s of sim
+  2. N rounds (default 9) of: PyBullet on the same arm (bench_pybullet.py, one run of 60 s of sim
      time, with the simulation paused), then the node unthrottled (max_update_rate 0). The
      machine's speed drifts, so each round compares the two measured back to back, and the median
      ratio is reported. The node's steps/s is its factor times 1000 (1 ms steps).
@@ -313,8 +313,9 @@ def rosgraph_service_up(master, name):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
-    parser.add_argument('--seconds', type=float, default=8.0, help='wall seconds per measurement (default 8)')
-    parser.add_argument('--rounds', type=int, default=3, help='unthrottled measurements, each after PyBullet\'s')
+    parser.add_argument('--seconds', type=float, default=3.0, help='wall seconds per measurement (default 3)')
+    parser.add_argument('--rounds', type=int, default=9,
+                        help='unthrottled measurements, each after PyBullet\'s (default 9: the VM\'s speed drifts)')
     parser.add_argument('--world', choices=sorted(WORLDS) + ['both'], default='both')
     parser.add_argument('--no-pybullet', action='store_true', help='skip the PyBullet comparison')
     args = parser.parse_args()
