@@ -69,6 +69,25 @@ def test_the_core_library_links_no_ros_library():
     assert [n for n in needed if ROS_LIBRARY.search(n)] == []
 
 
+def test_the_navigation_core_is_plain_cpp():
+    """navigation_core (costmaps, planners) includes only the C++ library and its own headers, and
+    its manifest names no ROS package."""
+    core = os.path.join(SRC, 'navigation_core')
+    sources = [p for folder in ('include', 'src', 'test')
+               for p in glob.glob(os.path.join(core, folder, '**', '*.*'), recursive=True) if p.endswith(('.h', '.cpp'))]
+    offenders = []
+    for path in sources:
+        with open(path) as f:
+            for number, line in enumerate(f, 1):
+                m = re.match(r'\s*#\s*include\s*[<"]([^>"]+)[>"]', line)
+                if m and not re.match(r'^(navigation_core/|gtest/|[a-z_]+$)', m.group(1)):
+                    offenders.append('%s:%d: %s' % (os.path.relpath(path, ROOT), number, m.group(1)))
+    assert offenders == [], 'non-standard headers in navigation_core:\n' + '\n'.join(offenders)
+    assert len(sources) >= 6  # the scan really looked at the package
+    depends, tests = manifest('navigation_core')
+    assert depends == set() and tests == {'gtest'}, (depends, tests)
+
+
 def test_simulator_dependencies_point_one_way():
     order = ['bullet_sim_core', 'bullet_sim_plugins', 'bullet_sim_ros_control', 'bullet_sim']
     for i, package in enumerate(order):
