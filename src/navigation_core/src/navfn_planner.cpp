@@ -1,0 +1,199 @@
+#include "navigation_core/navfn_planner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
+
+#include "navigation_core/cost_values.h"
+
+namespace navigation_core {
+namespace {
+
+constexpr float kCostFactor = 0.8f;
+constexpr double kStep = 0.5;  // cells per gradient-descent step, as navfn
+
+}  // namespace
+
+void NavfnPlanner::loadCosts(const Costmap& costmap) {
+  nx_ = costmap.sizeX();
+  ny_ = costmap.sizeY();
+  cost_.assign(static_cast<std::size_t>(nx_) * ny_, kObstacle);
+  for (unsigned y = 1; y + 1 < ny_; ++y) {
+    for (unsigned x = 1; x + 1 < nx_; ++x) {
+      const std::uint8_t v = costmap.cost(x, y);
+      float c = kObstacle;
+      if (v < kInscribedInflatedObstacle)
+        c = std::min(kNeutral + kCostFactor * v, kObstacle - 1);
+      else if (v == kNoInformation && options_.allow_unknown)
+        c = kObstacle - 1;
+      cost_[y * nx_ + x] = c;
+    }
+  }
+}
+
+float NavfnPlanner::interpolatedPotential(unsigned n) const {
+  float ta = std::min(potential_[n - 1], potential_[n + 1]);
+  float tc = std::min(potential_[n - nx_], potential_[n + nx_]);
+  if (ta > tc) std::swap(ta, tc);
+  const float hf = cost_[n];
+  const float dc = tc - ta;
+  if (dc >= hf) return ta + hf;  // only one neighbour counts: a straight step
+  const float t = dc / hf;
+  return ta + hf * (-0.2301f * t * t + 0.5307f * t + 0.7040f);
+}
+
+void NavfnPlanner::spread(unsigned source, unsigned target) {
+  potential_.assign(cost_.size(), kUnreached);
+  std::vector<bool> settled(cost_.size(), false);
+  using Entry = std::pair<float, unsigned>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+  potential_[source] = 0.0f;
+  open.push({0.0f, source});
+  while (!open.empty()) {
+    const auto [p, n] = open.top();
+    open.pop();
+    if (settled[n] || p > potential_[n]) continue;
+    settled[n] = true;
+    if (n == target) break;
+    for (const unsigned m : {n - 1, n + 1, n - nx_, n + nx_}) {
+      if (settled[m] || cost_[m] >= kObstacle) continue;  // borders are obstacles: m stays inside
+      const float candidate = interpolatedPotential(m);
+      if (candidate < potential_[m]) {
+        potential_[m] = candidate;
+        open.push({candidate, m});
+      }
+    }
+  }
+}
+
+void NavfnPlanner::gradientAt(unsigned n, double& gx, double& gy) const {
+  // Central differences over the neighbours that were reached; towards the reached side from an
+  // unreached cell.
+  gx = gy = 0.0;
+  const float here = potential_[n];
+  const auto reached = [&](unsigned m) { return potential_[m] < kUnreached; };
+  if (here >= kUnreached) {
+    if (reached(n - 1)) gx = kObstacle;
+    else if (reached(n + 1)) gx = -kObstacle;
+    if (reached(n - nx_)) gy = kObstacle;
+    else if (reached(n + nx_)) gy = -kObstacle;
+  } else {
+    if (reached(n - 1)) gx += here - potential_[n - 1];
+    if (reached(n + 1)) gx += potential_[n + 1] - here;
+    if (reached(n - nx_)) gy += here - potential_[n - nx_];
+    if (reached(n + nx_)) gy += potential_[n + nx_] - here;
+  }
+  const double norm = std::hypot(gx, gy);
+  if (norm > 0) {
+    gx /= norm;
+    gy /= norm;
+  }
+}
+
+bool NavfnPlanner::descend(double sx, double sy, std::vector<Point2>& samples) const {
+  // (sx, sy): sample coordinates, sample (i, j) being cell (i, j)'s centre.
+  const std::size_t max_steps = 4 * (static_cast<std::size_t>(nx_) + ny_) * 4;
+  for (std::size_t step = 0; step < max_steps; ++step) {
+    const int i = static_cast<int>(std::floor(sx)), j = static_cast<int>(std::floor(sy));
+    if (i < 1 || j < 1 || i + 2 >= static_cast<int>(nx_) || j + 2 >= static_cast<int>(ny_)) return false;
+    // The nearest sample decides whether we have arrived.
+    const unsigned near = static_cast<unsigned>(std::lround(sy)) * nx_ + static_cast<unsigned>(std::lround(sx));
+    if (potential_[near] < kNeutral) return true;
+    const unsigned n = static_cast<unsigned>(j) * nx_ + static_cast<unsigned>(i);
+    bool blocked = false;
+    for (const unsigned m : {n, n + 1, n + nx_, n + nx_ + 1}) blocked = blocked || potential_[m] >= kUnreached;
+    const std::size_t count = samples.size();
+    const bool oscillating = count >= 3 && std::hypot(samples[count - 1].x - samples[count - 3].x,
+                                                      samples[count - 1].y - samples[count - 3].y) < 1e-6;
+    if (blocked || oscillating) {
+      // Next to an obstacle (or going back and forth): step to the lowest of the nearest
+      // sample's eight neighbours, as navfn does.
+      unsigned best = near;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const unsigned m = static_cast<unsigned>(static_cast<int>(near) + dy * static_cast<int>(nx_) + dx);
+          if (potential_[m] < potential_[best]) best = m;
+        }
+      if (best == near) return false;  // a pit: nowhere lower to go
+      sx = best % nx_;
+      sy = best / nx_;
+    } else {
+      // The gradient interpolated bilinearly between the four samples around the point.
+      const double fx = sx - i, fy = sy - j;
+      double g[4][2];
+      gradientAt(n, g[0][0], g[0][1]);
+      gradientAt(n + 1, g[1][0], g[1][1]);
+      gradientAt(n + nx_, g[2][0], g[2][1]);
+      gradientAt(n + nx_ + 1, g[3][0], g[3][1]);
+      double gx = (1 - fy) * ((1 - fx) * g[0][0] + fx * g[1][0]) + fy * ((1 - fx) * g[2][0] + fx * g[3][0]);
+      double gy = (1 - fy) * ((1 - fx) * g[0][1] + fx * g[1][1]) + fy * ((1 - fx) * g[2][1] + fx * g[3][1]);
+      const double norm = std::hypot(gx, gy);
+      if (!(norm > 0)) return false;
+      sx -= kStep * gx / norm;
+      sy -= kStep * gy / norm;
+    }
+    samples.push_back({sx, sy});
+  }
+  return false;
+}
+
+std::vector<Point2> NavfnPlanner::makePlan(const Costmap& costmap, const Point2& start, const Point2& goal,
+                                           double tolerance, std::string* why) {
+  const auto fail = [&](const std::string& reason) {
+    if (why) *why = reason;
+    return std::vector<Point2>();
+  };
+  unsigned sx, sy, gx, gy;
+  if (!costmap.worldToMap(start.x, start.y, sx, sy)) return fail("the robot's position is off the costmap");
+  if (!costmap.worldToMap(goal.x, goal.y, gx, gy)) return fail("the goal is off the global costmap");
+  loadCosts(costmap);
+  const unsigned source = sy * nx_ + sx, target = gy * nx_ + gx;
+  // The robot's own cell is passable whatever the costmap says (NavfnROS clears it), unless it is
+  // on the map's edge.
+  if (sx == 0 || sy == 0 || sx + 1 >= nx_ || sy + 1 >= ny_) return fail("the robot is on the costmap's edge");
+  cost_[source] = kNeutral;
+  spread(source, target);
+
+  const double res = costmap.resolution();
+  Point2 end = goal;
+  unsigned end_cell = target;
+  if (potential_[target] >= kUnreached) {
+    if (tolerance < 0) tolerance = options_.default_tolerance;
+    // The reached cell nearest to the goal within the tolerance (NavfnROS searches the same way).
+    double best = std::numeric_limits<double>::infinity();
+    const int reach = static_cast<int>(std::ceil(tolerance / res));
+    for (int dy = -reach; dy <= reach; ++dy) {
+      for (int dx = -reach; dx <= reach; ++dx) {
+        const int x = static_cast<int>(gx) + dx, y = static_cast<int>(gy) + dy;
+        if (x < 0 || y < 0 || x >= static_cast<int>(nx_) || y >= static_cast<int>(ny_)) continue;
+        const unsigned m = static_cast<unsigned>(y) * nx_ + static_cast<unsigned>(x);
+        Point2 centre;
+        costmap.mapToWorld(static_cast<unsigned>(x), static_cast<unsigned>(y), centre.x, centre.y);
+        const double d = std::hypot(centre.x - goal.x, centre.y - goal.y);
+        if (potential_[m] < kUnreached && d <= tolerance && d < best) {
+          best = d;
+          end = centre;
+          end_cell = m;
+        }
+      }
+    }
+    if (!std::isfinite(best)) return fail("no path to the goal: it is in an obstacle or walled off");
+  }
+
+  // Descend from the end to the robot in sample coordinates (sample (i, j) = cell (i, j)'s centre).
+  std::vector<Point2> samples;
+  const double ex = (end.x - costmap.originX()) / res - 0.5, ey = (end.y - costmap.originY()) / res - 0.5;
+  if (end_cell != source && !descend(ex, ey, samples))
+    return fail("a potential was found but no path could be traced down it");
+  std::vector<Point2> path{start};
+  for (auto it = samples.rbegin(); it != samples.rend(); ++it)
+    path.push_back({costmap.originX() + (it->x + 0.5) * res, costmap.originY() + (it->y + 0.5) * res});
+  path.push_back(end);
+  if (why) why->clear();
+  return path;
+}
+
+}  // namespace navigation_core
