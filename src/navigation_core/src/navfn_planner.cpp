@@ -2,9 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
-#include <queue>
 #include <utility>
 
 #include "navigation_core/cost_values.h"
@@ -46,26 +44,41 @@ float NavfnPlanner::interpolatedPotential(unsigned n) const {
 }
 
 void NavfnPlanner::spread(unsigned source, unsigned target) {
-  potential_.assign(cost_.size(), kUnreached);
-  std::vector<bool> settled(cost_.size(), false);
-  using Entry = std::pair<float, unsigned>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-  potential_[source] = 0.0f;
-  open.push({0.0f, source});
-  while (!open.empty()) {
-    const auto [p, n] = open.top();
-    open.pop();
-    if (settled[n] || p > potential_[n]) continue;
-    settled[n] = true;
-    if (n == target) break;
-    for (const unsigned m : {n - 1, n + 1, n - nx_, n + nx_}) {
-      if (settled[m] || cost_[m] >= kObstacle) continue;  // borders are obstacles: m stays inside
-      const float candidate = interpolatedPotential(m);
-      if (candidate < potential_[m]) {
-        potential_[m] = candidate;
-        open.push({candidate, m});
-      }
+  // navfn's wavefront: cells whose potential falls below a threshold are expanded in rounds; the
+  // others wait in an overflow list until the threshold rises by kThresholdStep. Not exactly
+  // Dijkstra's order (a cell may be updated twice) but linear in the map, where a heap is not.
+  constexpr float kThresholdStep = 2 * kNeutral;
+  const std::size_t size = cost_.size();
+  potential_.assign(size, kUnreached);
+  std::vector<std::uint8_t> pending(size, 0);
+  std::vector<unsigned> current, next, overflow;
+  const auto push = [&](std::vector<unsigned>& list, unsigned m) {
+    if (!pending[m] && cost_[m] < kObstacle) {
+      pending[m] = 1;
+      list.push_back(m);
     }
+  };
+  potential_[source] = 0.0f;
+  for (const unsigned m : {source - 1, source + 1, source - nx_, source + nx_}) push(current, m);
+  float threshold = kObstacle;
+  while (!current.empty() || !overflow.empty()) {
+    for (const unsigned n : current) pending[n] = 0;
+    for (const unsigned n : current) {
+      const float candidate = interpolatedPotential(n);
+      if (!(candidate < potential_[n])) continue;
+      potential_[n] = candidate;
+      // Neighbours that this cell could improve go to the next round, or wait for a higher threshold.
+      std::vector<unsigned>& to = candidate < threshold ? next : overflow;
+      for (const unsigned m : {n - 1, n + 1, n - nx_, n + nx_})
+        if (potential_[m] > candidate + cost_[m] * static_cast<float>(M_SQRT1_2)) push(to, m);
+    }
+    current.swap(next);
+    next.clear();
+    if (current.empty()) {
+      threshold += kThresholdStep;
+      current.swap(overflow);
+    }
+    if (target < size && potential_[target] < kUnreached) break;  // reached: navfn stops here too
   }
 }
 

@@ -1,8 +1,9 @@
 #pragma once
-// A global planner after navfn (NavfnROS): a potential spreads from the robot over the costmap,
-// Dijkstra-ordered, each cell's value interpolated quadratically from its two lowest neighbours
-// (navfn's approximation of the Eikonal equation, so paths cut corners like straight lines rather
-// than staircases); the path descends the potential's gradient from the goal back to the robot.
+// A global planner after navfn (NavfnROS): a potential spreads from the robot over the costmap in
+// navfn's wavefront order (Dijkstra's, in bands), each cell's value interpolated quadratically from
+// its two lowest neighbours (navfn's approximation of the Eikonal equation, so paths cut across
+// open space like straight lines rather than staircases); the path descends the potential's
+// gradient from the goal back to the robot.
 //
 // Costs as navfn reads a costmap: a free cell costs kNeutral (50), a cell of cost c costs
 // 50 + 0.8 c; lethal and inscribed cells (and unknown ones unless allow_unknown) are obstacles,
@@ -43,7 +44,8 @@ class NavfnPlanner {
 
  private:
   void loadCosts(const Costmap& costmap);
-  // Spreads the potential from cell `source` until cell `target` is settled (or everywhere).
+  // Spreads the potential from cell `source` until cell `target` is reached (or everywhere: pass
+  // a target past the end).
   void spread(unsigned source, unsigned target);
   float interpolatedPotential(unsigned index) const;
   // Gradient descent from continuous cell coordinates (x, y) to the source; false if stuck.
