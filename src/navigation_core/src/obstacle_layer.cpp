@@ -1,0 +1,76 @@
+#include "navigation_core/obstacle_layer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include "navigation_core/cost_values.h"
+
+namespace navigation_core {
+namespace {
+
+// Frees the cells of the line from (x0, y0) towards (x1, y1) (Bresenham), at most max_length
+// cells along the major axis plus the cell where it stops, as costmap_2d's raytraceLine.
+void clearLine(Costmap& layer, int x0, int y0, int x1, int y1, unsigned max_length) {
+  const int dx = x1 - x0, dy = y1 - y0;
+  const int abs_dx = std::abs(dx), abs_dy = std::abs(dy);
+  const int step_x = dx > 0 ? 1 : -1, step_y = dy > 0 ? 1 : -1;
+  const double distance = std::hypot(dx, dy);
+  const double scale = distance == 0.0 ? 1.0 : std::min(1.0, max_length / distance);
+  const bool x_major = abs_dx >= abs_dy;
+  const int major = x_major ? abs_dx : abs_dy, minor = x_major ? abs_dy : abs_dx;
+  const int end = std::min(static_cast<int>(scale * major), major);
+  int x = x0, y = y0, error = major / 2;
+  for (int i = 0; i < end; ++i) {
+    layer.setCost(static_cast<unsigned>(x), static_cast<unsigned>(y), kFreeSpace);
+    if (x_major) x += step_x; else y += step_y;
+    error += minor;
+    if (error >= major) {
+      if (x_major) y += step_y; else x += step_x;
+      error -= major;
+    }
+  }
+  layer.setCost(static_cast<unsigned>(x), static_cast<unsigned>(y), kFreeSpace);
+}
+
+}  // namespace
+
+void applyObservation(Costmap& layer, const Observation& observation, const ObstacleLayerOptions& options) {
+  const Point3& o = observation.origin;
+  unsigned ox, oy;
+  if (!layer.worldToMap(o.x, o.y, ox, oy)) return;  // a sensor off the map clears nothing (upstream warns)
+  if (options.clearing) {
+    const double min_x = layer.originX(), min_y = layer.originY();
+    const double max_x = min_x + layer.sizeX() * layer.resolution(), max_y = min_y + layer.sizeY() * layer.resolution();
+    const unsigned max_cells = layer.cellDistance(options.raytrace_range);
+    for (const Point3& p : observation.points) {
+      double wx = p.x, wy = p.y;
+      if (!std::isfinite(wx) || !std::isfinite(wy)) continue;
+      // Clip the ray to the map, keeping its direction.
+      const auto clip = [&](double& a, double& b, double oa, double ob, double bound) {
+        const double t = (bound - oa) / (a - oa);
+        a = bound;
+        b = ob + (b - ob) * t;
+      };
+      if (wx < min_x) clip(wx, wy, o.x, o.y, min_x);
+      if (wy < min_y) clip(wy, wx, o.y, o.x, min_y);
+      if (wx > max_x - 1e-9) clip(wx, wy, o.x, o.y, max_x - 1e-9);
+      if (wy > max_y - 1e-9) clip(wy, wx, o.y, o.x, max_y - 1e-9);
+      unsigned ex, ey;
+      if (!layer.worldToMap(wx, wy, ex, ey)) continue;
+      clearLine(layer, static_cast<int>(ox), static_cast<int>(oy), static_cast<int>(ex), static_cast<int>(ey), max_cells);
+    }
+  }
+  if (options.marking) {
+    const double range2 = options.obstacle_range * options.obstacle_range;
+    for (const Point3& p : observation.points) {
+      if (!(p.z <= options.max_obstacle_height && p.z >= options.min_obstacle_height)) continue;  // also NaN
+      const double d2 = (p.x - o.x) * (p.x - o.x) + (p.y - o.y) * (p.y - o.y) + (p.z - o.z) * (p.z - o.z);
+      if (!(d2 < range2)) continue;
+      unsigned mx, my;
+      if (layer.worldToMap(p.x, p.y, mx, my)) layer.setCost(mx, my, kLethalObstacle);
+    }
+  }
+}
+
+}  // namespace navigation_core
