@@ -1,0 +1,72 @@
+#pragma once
+// A local planner after base_local_planner's trajectory rollout and DWA: sample velocities the
+// robot can reach, simulate each for sim_time, drop those whose footprint would touch an obstacle,
+// and score the rest by how far they end from the global path and from the local goal and by the
+// costs they pass over; the cheapest is the command.
+//
+//   score = path_distance_bias * path distance + goal_distance_bias * goal distance
+//           + occdist_scale * highest footprint cost
+//
+// Distances are counted in cells over the costmap around obstacles (in metres with meter_scoring),
+// 8-connected where base_local_planner's map grid is 4-connected (local_planner.cpp says why).
+#include <string>
+#include <vector>
+
+#include "navigation_core/costmap.h"
+#include "navigation_core/footprint.h"
+
+namespace navigation_core {
+
+struct Pose2 {
+  double x = 0.0, y = 0.0, theta = 0.0;
+};
+struct Velocity2 {
+  double x = 0.0, y = 0.0, theta = 0.0;  // in the robot's frame
+};
+
+struct LocalPlannerOptions {  // base_local_planner's TrajectoryPlannerROS parameters and defaults
+  double max_vel_x = 0.5, min_vel_x = 0.1;
+  double max_vel_theta = 1.0, min_vel_theta = -1.0;
+  double min_in_place_vel_theta = 0.4;
+  double heading_lookahead = 0.325;  // m: turning in place, look this far ahead along the heading
+  double acc_lim_x = 2.5, acc_lim_theta = 3.2;
+  double escape_vel = -0.1;  // backing out when nothing else is safe
+  double sim_time = 1.0, sim_granularity = 0.025, angular_sim_granularity = 0.025;
+  int vx_samples = 3, vtheta_samples = 20;
+  bool dwa = true;           // the window is what the accelerations reach in one control period
+  double sim_period = 0.05;  // s: 1 / move_base's controller_frequency
+  double path_distance_bias = 0.6, goal_distance_bias = 0.8, occdist_scale = 0.01;
+  bool meter_scoring = false;
+};
+
+struct Trajectory {
+  Velocity2 velocity;
+  std::vector<Pose2> poses;
+  double cost = -1.0;  // negative: the footprint would touch an obstacle somewhere along it
+};
+
+class LocalPlanner {
+ public:
+  explicit LocalPlanner(const LocalPlannerOptions& options);
+
+  // The command for the robot at `pose` moving at `velocity`, following `plan` (world points in
+  // the costmap's frame, robot first). False, with the reason, when no sampled trajectory is safe.
+  bool computeVelocity(const Costmap& costmap, const Footprint& footprint, const Pose2& pose,
+                       const Velocity2& velocity, const std::vector<Point2>& plan, Trajectory& best,
+                       std::string* why);
+
+  // One trajectory at a constant command from `pose`, scored against the distance grids of the
+  // last computeVelocity (for tests and the local_plan topic).
+  Trajectory simulate(const Costmap& costmap, const Footprint& footprint, const Pose2& pose,
+                      const Velocity2& command) const;
+
+ private:
+  // The highest cost under the footprint's outline at `pose`, or -1 if it touches an obstacle.
+  double footprintCost(const Costmap& costmap, const Footprint& footprint, const Pose2& pose) const;
+  void distanceGrid(const Costmap& costmap, const std::vector<unsigned>& seeds, std::vector<double>& out) const;
+
+  LocalPlannerOptions options_;
+  std::vector<double> path_distance_, goal_distance_;
+};
+
+}  // namespace navigation_core

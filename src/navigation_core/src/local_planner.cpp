@@ -1,0 +1,209 @@
+#include "navigation_core/local_planner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <queue>
+#include <utility>
+#include <limits>
+#include <stdexcept>
+
+#include "navigation_core/cost_values.h"
+
+namespace navigation_core {
+namespace {
+
+constexpr double kUnreachable = 1e9;  // cells: no way round the obstacles to the path or goal
+
+bool blocksTheGrid(std::uint8_t cost) { return cost >= kInscribedInflatedObstacle; }
+
+void requirePositive(double value, const char* name) {
+  if (!(value > 0) || !std::isfinite(value))
+    throw std::invalid_argument(std::string("local planner: ") + name + ": expected a number > 0, got " +
+                                std::to_string(value));
+}
+
+}  // namespace
+
+LocalPlanner::LocalPlanner(const LocalPlannerOptions& options) : options_(options) {
+  requirePositive(options.sim_time, "sim_time");
+  requirePositive(options.sim_granularity, "sim_granularity");
+  requirePositive(options.angular_sim_granularity, "angular_sim_granularity");
+  requirePositive(options.sim_period, "the control period (controller_frequency)");
+  if (options.vx_samples < 1 || options.vtheta_samples < 1)
+    throw std::invalid_argument("local planner: vx_samples and vtheta_samples: expected at least 1");
+  if (options.min_vel_x > options.max_vel_x || options.min_vel_theta > options.max_vel_theta)
+    throw std::invalid_argument("local planner: a minimum velocity is above its maximum");
+}
+
+void LocalPlanner::distanceGrid(const Costmap& costmap, const std::vector<unsigned>& seeds,
+                                std::vector<double>& out) const {
+  // Dijkstra over 8-connected cells (diagonal steps cost sqrt 2) around obstacles: within 8 % of
+  // the Euclidean distance, where base_local_planner's 4-connected count is the Manhattan one and
+  // makes a robot heading diagonally to its goal look as well placed as one heading straight at it.
+  const unsigned nx = costmap.sizeX(), ny = costmap.sizeY();
+  out.assign(costmap.costs().size(), kUnreachable);
+  using Entry = std::pair<double, unsigned>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+  for (const unsigned s : seeds) {
+    out[s] = 0.0;
+    open.push({0.0, s});
+  }
+  while (!open.empty()) {
+    const auto [d, n] = open.top();
+    open.pop();
+    if (d > out[n]) continue;
+    const int x = static_cast<int>(n % nx), y = static_cast<int>(n / nx);
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        if ((dx == 0 && dy == 0) || x + dx < 0 || y + dy < 0 || x + dx >= static_cast<int>(nx) ||
+            y + dy >= static_cast<int>(ny))
+          continue;
+        const unsigned m = static_cast<unsigned>((y + dy) * static_cast<int>(nx) + x + dx);
+        if (blocksTheGrid(costmap.costs()[m])) continue;
+        const double next = d + (dx != 0 && dy != 0 ? M_SQRT2 : 1.0);
+        if (next < out[m]) {
+          out[m] = next;
+          open.push({next, m});
+        }
+      }
+    }
+  }
+}
+
+double LocalPlanner::footprintCost(const Costmap& costmap, const Footprint& footprint, const Pose2& pose) const {
+  unsigned cx, cy;
+  if (!costmap.worldToMap(pose.x, pose.y, cx, cy)) return -1.0;
+  const std::uint8_t centre = costmap.cost(cx, cy);
+  if (centre >= kInscribedInflatedObstacle) return -1.0;  // lethal, inscribed or unknown under the centre
+  double highest = centre;
+  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
+  const double step = 0.5 * costmap.resolution();
+  for (std::size_t i = 0; i < footprint.size(); ++i) {
+    const Point2& a = footprint[i];
+    const Point2& b = footprint[(i + 1) % footprint.size()];
+    const double ax = pose.x + c * a.x - s * a.y, ay = pose.y + s * a.x + c * a.y;
+    const double bx = pose.x + c * b.x - s * b.y, by = pose.y + s * b.x + c * b.y;
+    const int n = std::max(1, static_cast<int>(std::ceil(std::hypot(bx - ax, by - ay) / step)));
+    for (int k = 0; k <= n; ++k) {  // along the outline every half cell
+      const double t = static_cast<double>(k) / n;
+      unsigned mx, my;
+      if (!costmap.worldToMap(ax + t * (bx - ax), ay + t * (by - ay), mx, my)) return -1.0;
+      const std::uint8_t cost = costmap.cost(mx, my);
+      if (cost == kLethalObstacle || cost == kNoInformation) return -1.0;
+      highest = std::max(highest, static_cast<double>(cost));
+    }
+  }
+  return highest;
+}
+
+Trajectory LocalPlanner::simulate(const Costmap& costmap, const Footprint& footprint, const Pose2& pose,
+                                  const Velocity2& command) const {
+  Trajectory t;
+  t.velocity = command;
+  const double distance = std::abs(command.x) * options_.sim_time;
+  const double angle = std::abs(command.theta) * options_.sim_time;
+  const int steps = std::max(1, static_cast<int>(std::ceil(std::max(distance / options_.sim_granularity,
+                                                                    angle / options_.angular_sim_granularity))));
+  const double dt = options_.sim_time / steps;
+  Pose2 p = pose;
+  double highest = 0.0;
+  for (int k = 0; k < steps; ++k) {
+    p.x += command.x * std::cos(p.theta) * dt;
+    p.y += command.x * std::sin(p.theta) * dt;
+    p.theta += command.theta * dt;
+    const double cost = footprintCost(costmap, footprint, p);
+    if (cost < 0) return t;  // cost stays -1: unsafe
+    highest = std::max(highest, cost);
+    t.poses.push_back(p);
+  }
+  unsigned mx, my;
+  if (!costmap.worldToMap(p.x, p.y, mx, my) || path_distance_.size() != costmap.costs().size()) return t;
+  const unsigned end = costmap.index(mx, my);
+  const double scale = options_.meter_scoring ? costmap.resolution() : 1.0;
+  t.cost = options_.path_distance_bias * scale * path_distance_[end] +
+           options_.goal_distance_bias * scale * goal_distance_[end] + options_.occdist_scale * highest;
+  return t;
+}
+
+bool LocalPlanner::computeVelocity(const Costmap& costmap, const Footprint& footprint, const Pose2& pose,
+                                   const Velocity2& velocity, const std::vector<Point2>& plan, Trajectory& best,
+                                   std::string* why) {
+  const auto fail = [&](const std::string& reason) {
+    if (why) *why = reason;
+    return false;
+  };
+  // The path's cells (every half cell along it) and the local goal: its last point on the costmap.
+  std::vector<unsigned> path_cells;
+  unsigned goal_cell = 0;
+  bool has_goal = false;
+  for (std::size_t k = 0; k < plan.size(); ++k) {
+    const Point2& b = plan[k];
+    const Point2& a = k > 0 ? plan[k - 1] : b;
+    const int n = std::max(1, static_cast<int>(std::ceil(std::hypot(b.x - a.x, b.y - a.y) / (0.5 * costmap.resolution()))));
+    for (int i = 1; i <= n; ++i) {
+      const double t = static_cast<double>(i) / n;
+      unsigned mx, my;
+      if (!costmap.worldToMap(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), mx, my)) continue;
+      path_cells.push_back(costmap.index(mx, my));
+      goal_cell = path_cells.back();
+      has_goal = true;
+    }
+  }
+  if (!has_goal) return fail("the global plan does not cross the local costmap");
+  distanceGrid(costmap, path_cells, path_distance_);
+  distanceGrid(costmap, {goal_cell}, goal_distance_);
+
+  // The dynamic window: what the accelerations reach in one control period (dwa) or in sim_time.
+  const double horizon = options_.dwa ? options_.sim_period : options_.sim_time;
+  double max_vx = std::min(options_.max_vel_x, velocity.x + options_.acc_lim_x * horizon);
+  double min_vx = std::max(options_.min_vel_x, velocity.x - options_.acc_lim_x * horizon);
+  double max_vth = std::min(options_.max_vel_theta, velocity.theta + options_.acc_lim_theta * horizon);
+  double min_vth = std::max(options_.min_vel_theta, velocity.theta - options_.acc_lim_theta * horizon);
+  if (min_vx > max_vx) min_vx = max_vx;
+  if (min_vth > max_vth) min_vth = max_vth;
+
+  best = Trajectory();
+  const auto consider = [&](double vx, double vth) {
+    Velocity2 command;
+    command.x = vx;
+    command.theta = vth;
+    Trajectory t = simulate(costmap, footprint, pose, command);
+    if (t.cost >= 0 && (best.cost < 0 || t.cost < best.cost)) best = std::move(t);
+  };
+  const int nvx = options_.vx_samples, nvth = options_.vtheta_samples;
+  for (int i = 0; i < nvx; ++i) {
+    const double vx = nvx == 1 ? max_vx : min_vx + i * (max_vx - min_vx) / (nvx - 1);
+    for (int j = 0; j < nvth; ++j) consider(vx, nvth == 1 ? 0.0 : min_vth + j * (max_vth - min_vth) / (nvth - 1));
+  }
+  // Turning in place, at least min_in_place_vel_theta. A turn ends where it began, so all turns
+  // score alike; as base_local_planner, the one whose heading then points at the cell nearest to
+  // the goal (heading_lookahead ahead) is taken, if it scores no worse than the best move.
+  double best_ahead = std::numeric_limits<double>::infinity();
+  for (int j = 0; j < nvth; ++j) {
+    double vth = nvth == 1 ? 0.0 : min_vth + j * (max_vth - min_vth) / (nvth - 1);
+    if (vth == 0.0) continue;
+    vth = vth > 0 ? std::max(vth, options_.min_in_place_vel_theta) : std::min(vth, -options_.min_in_place_vel_theta);
+    Velocity2 command;
+    command.theta = vth;
+    Trajectory t = simulate(costmap, footprint, pose, command);
+    if (t.cost < 0 || t.poses.empty() || (best.cost >= 0 && t.cost > best.cost)) continue;
+    const Pose2& end = t.poses.back();
+    unsigned mx, my;
+    if (!costmap.worldToMap(end.x + options_.heading_lookahead * std::cos(end.theta),
+                            end.y + options_.heading_lookahead * std::sin(end.theta), mx, my))
+      continue;
+    const double ahead = goal_distance_[costmap.index(mx, my)];
+    if (ahead < best_ahead) {
+      best_ahead = ahead;
+      best = std::move(t);
+    }
+  }
+  if (best.cost >= 0) return true;
+  consider(options_.escape_vel, 0.0);  // back out
+  if (best.cost >= 0) return true;
+  return fail("no valid trajectory: every sampled command would bring the footprint onto an obstacle within sim_time");
+}
+
+}  // namespace navigation_core

@@ -1,0 +1,145 @@
+// The trajectory-rollout local planner, closed loop: its commands integrated as a perfect robot would.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "navigation_core/cost_values.h"
+#include "navigation_core/inflation.h"
+#include "navigation_core/local_planner.h"
+
+namespace navigation_core {
+namespace {
+
+constexpr double kRes = 0.05;
+const Footprint kFootprint = {{-0.12, -0.09}, {-0.12, 0.09}, {0.12, 0.09}, {0.12, -0.09}};  // m_robot's
+
+enum class Obstacle { kNone, kWall, kBox };
+
+// A 5 x 5 m costmap, inflated as costmap_2d would: empty, with a wall across x = 3.00-3.10 m, or
+// with a 0.4 m box at x 2.5-2.9, y 2.3-2.7.
+Costmap arena(Obstacle obstacle) {
+  Costmap map(100, 100, kRes, 0, 0);
+  for (unsigned y = 0; y < 100; ++y) {
+    for (unsigned x = 0; x < 100; ++x) {
+      const bool wall = obstacle == Obstacle::kWall && (x == 60 || x == 61);
+      const bool box = obstacle == Obstacle::kBox && x >= 50 && x < 58 && y >= 46 && y < 54;
+      if (wall || box) map.setCost(x, y, kLethalObstacle);
+    }
+  }
+  InflationOptions inflation;
+  inflation.inflation_radius = 0.3;
+  Inflation(inflation, footprintRadii(kFootprint).inscribed, kRes).apply(map);
+  return map;
+}
+
+std::vector<Point2> straightPlan(Point2 from, Point2 to) {
+  std::vector<Point2> plan;
+  for (int k = 0; k <= 100; ++k) plan.push_back({from.x + (to.x - from.x) * k / 100, from.y + (to.y - from.y) * k / 100});
+  return plan;
+}
+
+struct DriveResult {
+  Pose2 pose;
+  bool collided = false;
+  int failures = 0;
+  double max_front_x = -1e9;
+};
+
+// Follows `plan` for `seconds` at 20 Hz, the robot doing exactly what it is told.
+DriveResult drive(const Costmap& map, Pose2 pose, const std::vector<Point2>& plan, double seconds, double stop_within) {
+  LocalPlanner planner{LocalPlannerOptions()};
+  DriveResult run;
+  Velocity2 velocity;
+  const double dt = 0.05;
+  for (double t = 0; t < seconds; t += dt) {
+    if (std::hypot(pose.x - plan.back().x, pose.y - plan.back().y) < stop_within) break;
+    Trajectory best;
+    std::string why;
+    if (!planner.computeVelocity(map, kFootprint, pose, velocity, plan, best, &why)) {
+      ++run.failures;
+      velocity = Velocity2();
+      continue;
+    }
+    velocity = best.velocity;
+    pose.x += velocity.x * std::cos(pose.theta) * dt;
+    pose.y += velocity.x * std::sin(pose.theta) * dt;
+    pose.theta += velocity.theta * dt;
+    for (const Point2& c : kFootprint) {
+      const double x = pose.x + std::cos(pose.theta) * c.x - std::sin(pose.theta) * c.y;
+      const double y = pose.y + std::sin(pose.theta) * c.x + std::cos(pose.theta) * c.y;
+      unsigned mx, my;
+      run.collided = run.collided || !map.worldToMap(x, y, mx, my) || map.cost(mx, my) == kLethalObstacle;
+      run.max_front_x = std::max(run.max_front_x, x);
+    }
+  }
+  run.pose = pose;
+  return run;
+}
+
+TEST(LocalPlanner, InTheOpenItDrivesForwardAlongThePath) {
+  const Costmap map = arena(Obstacle::kNone);
+  LocalPlanner planner{LocalPlannerOptions()};
+  Trajectory best;
+  std::string why;
+  ASSERT_TRUE(planner.computeVelocity(map, kFootprint, {1.0, 2.5, 0.0}, Velocity2(), straightPlan({1.0, 2.5}, {4.0, 2.5}),
+                                      best, &why))
+      << why;
+  EXPECT_GT(best.velocity.x, 0.0);
+  EXPECT_LE(best.velocity.x, 2.5 * 0.05 + 1e-9);  // within the window from rest: acc_lim_x * one period
+  EXPECT_LE(std::abs(best.velocity.theta), 0.2);
+}
+
+TEST(LocalPlanner, ItTurnsTowardsAPathThatBendsLeft) {
+  const Costmap map = arena(Obstacle::kNone);
+  LocalPlanner planner{LocalPlannerOptions()};
+  Trajectory best;
+  std::string why;
+  ASSERT_TRUE(planner.computeVelocity(map, kFootprint, {1.0, 1.0, 0.0}, Velocity2(), straightPlan({1.0, 1.0}, {1.5, 4.0}),
+                                      best, &why))
+      << why;
+  EXPECT_GT(best.velocity.theta, 0.0);
+}
+
+TEST(LocalPlanner, ItReachesAGoalAheadWithoutTouchingAnything) {
+  const DriveResult run = drive(arena(Obstacle::kNone), {1.0, 2.5, 0.3}, straightPlan({1.0, 2.5}, {3.5, 2.0}), 40.0, 0.10);
+  EXPECT_FALSE(run.collided);
+  EXPECT_EQ(run.failures, 0);
+  EXPECT_LT(std::hypot(run.pose.x - 3.5, run.pose.y - 2.0), 0.10);
+}
+
+TEST(LocalPlanner, ItGoesRoundABoxOnThePathToTheGoal) {
+  // The path runs through the box (as when the world changed under a global plan); the goal
+  // distance counts round it.
+  const DriveResult run = drive(arena(Obstacle::kBox), {1.0, 2.5, 0.0}, straightPlan({1.0, 2.5}, {4.0, 2.5}), 40.0, 0.10);
+  EXPECT_FALSE(run.collided);
+  EXPECT_LT(std::hypot(run.pose.x - 4.0, run.pose.y - 2.5), 0.10);
+}
+
+TEST(LocalPlanner, ATrajectoryOntoAWallIsCutAtTheLastSafePose) {
+  const Costmap map = arena(Obstacle::kWall);
+  const LocalPlanner planner{LocalPlannerOptions()};
+  Velocity2 half_speed;
+  half_speed.x = 0.5;  // 0.5 m in the 1 s simulated, in steps of sim_granularity (0.025 m)
+  // From x = 2.5 the front edge (0.12 m ahead) is at 2.62 + 0.025 k after step k: on the wall's
+  // first cell (x >= 3.00) from step 16, so 15 safe poses and the trajectory is unsafe.
+  const Trajectory into = planner.simulate(map, kFootprint, {2.5, 2.5, 0.0}, half_speed);
+  EXPECT_EQ(into.poses.size(), 15u);
+  EXPECT_LT(into.cost, 0.0);
+  // Along the wall, or stopping short of it (0.2 m: front at 2.82 m, over inflated cells only): every pose safe.
+  EXPECT_EQ(planner.simulate(map, kFootprint, {2.5, 1.0, M_PI / 2}, half_speed).poses.size(), 20u);
+  Velocity2 slow;
+  slow.x = 0.2;
+  EXPECT_EQ(planner.simulate(map, kFootprint, {2.5, 2.5, 0.0}, slow).poses.size(), 8u);
+}
+
+TEST(LocalPlanner, ItNeverDrivesIntoAWallAcrossThePath) {
+  // The goal is behind a wall from edge to edge: nothing reaches it, and nothing may touch the wall.
+  const DriveResult run = drive(arena(Obstacle::kWall), {2.2, 2.5, 0.0}, straightPlan({2.2, 2.5}, {4.5, 2.5}), 20.0, 0.10);
+  EXPECT_FALSE(run.collided);
+  EXPECT_LT(run.max_front_x, 3.0);
+}
+
+}  // namespace
+}  // namespace navigation_core
