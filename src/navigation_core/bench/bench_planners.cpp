@@ -1,0 +1,124 @@
+// bench_planners: the navigation core's planning times (issue 11; figures in docs/PERFORMANCE.md).
+//
+//   bench_planners [--seed 1] [--plans 20]
+//
+// 1. Global plans (NavfnPlanner::makePlan) on 200 x 200, 512 x 512 and 2048 x 2048 grids of
+//    0.05 m cells: a maze-like map (walls of random length on a 1 m lattice, inflated as
+//    costmap_2d would for a 0.24 x 0.18 m robot), PLANS seeded random start/goal pairs in free
+//    space at least half the map apart; mean and worst milliseconds per plan, and how many found one.
+// 2. The local planner's cycle (LocalPlanner::computeVelocity) on a 4 x 4 m rolling window with
+//    base_local_planner's default sampling (3 x 20 velocities, 1 s at 0.025 m), following a path
+//    across it: mean and worst microseconds.
+// 3. Inflating the whole 512 x 512 map once: milliseconds.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "navigation_core/cost_values.h"
+#include "navigation_core/inflation.h"
+#include "navigation_core/local_planner.h"
+#include "navigation_core/navfn_planner.h"
+
+using namespace navigation_core;
+
+namespace {
+
+const Footprint kFootprint = {{-0.12, -0.09}, {-0.12, 0.09}, {0.12, 0.09}, {0.12, -0.09}};
+constexpr double kRes = 0.05;
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+Costmap maze(unsigned cells, std::mt19937& rng) {
+  Costmap map(cells, cells, kRes, 0, 0);
+  const unsigned lattice = 20;  // 1 m
+  std::uniform_int_distribution<int> coin(0, 2);
+  for (unsigned y = 0; y < cells; y += lattice) {
+    for (unsigned x = 0; x < cells; x += lattice) {
+      const int kind = coin(rng);  // none, a horizontal or a vertical wall of 1 m
+      for (unsigned k = 0; k < lattice && kind != 0; ++k) {
+        const unsigned wx = kind == 1 ? x + k : x, wy = kind == 1 ? y : y + k;
+        if (wx < cells && wy < cells) map.setCost(wx, wy, kLethalObstacle);
+      }
+    }
+  }
+  InflationOptions inflation;
+  Inflation(inflation, footprintRadii(kFootprint).inscribed, kRes).apply(map);
+  return map;
+}
+
+Point2 freePoint(const Costmap& map, std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(0.1, map.sizeX() * kRes - 0.1);
+  for (;;) {
+    const Point2 p{u(rng), u(rng)};
+    unsigned mx, my;
+    if (map.worldToMap(p.x, p.y, mx, my) && map.cost(mx, my) < 128) return p;
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  unsigned seed = 1;
+  int plans = 20;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--seed")) seed = static_cast<unsigned>(std::atoi(argv[i + 1]));
+    else if (!std::strcmp(argv[i], "--plans")) plans = std::atoi(argv[i + 1]);
+  }
+  std::printf("bench_planners --seed %u --plans %d\n", seed, plans);
+  for (const unsigned cells : {200u, 512u, 2048u}) {
+    std::mt19937 rng(seed);
+    const Costmap map = maze(cells, rng);
+    NavfnPlanner planner;
+    double total = 0, worst = 0;
+    int found = 0;
+    for (int k = 0; k < plans; ++k) {
+      Point2 a = freePoint(map, rng), b = freePoint(map, rng);
+      while (std::hypot(a.x - b.x, a.y - b.y) < 0.5 * cells * kRes) b = freePoint(map, rng);
+      const auto start = std::chrono::steady_clock::now();
+      std::string why;
+      found += !planner.makePlan(map, a, b, 0.0, &why).empty();
+      const double ms = millisecondsSince(start);
+      total += ms;
+      worst = std::max(worst, ms);
+    }
+    std::printf("global plan %ux%u: %.2f ms mean, %.2f ms worst, %d of %d found\n", cells, cells, total / plans, worst,
+                found, plans);
+  }
+  {
+    std::mt19937 rng(seed);
+    const Costmap window = maze(80, rng);
+    LocalPlanner planner{LocalPlannerOptions()};
+    std::vector<Point2> plan;
+    for (int k = 0; k <= 80; ++k) plan.push_back({0.2 + 3.6 * k / 80, 2.0 + 1.5 * std::sin(k * 0.08)});
+    double total = 0, worst = 0;
+    const int cycles = 200;
+    for (int k = 0; k < cycles; ++k) {
+      Trajectory best;
+      std::string why;
+      Velocity2 v;
+      v.x = 0.2;
+      const auto start = std::chrono::steady_clock::now();
+      planner.computeVelocity(window, kFootprint, {0.2, 2.0, 0.0}, v, plan, best, &why);
+      const double us = 1000 * millisecondsSince(start);
+      total += us;
+      worst = std::max(worst, us);
+    }
+    std::printf("local planner cycle 80x80 window: %.0f us mean, %.0f us worst\n", total / cycles, worst);
+  }
+  {
+    std::mt19937 rng(seed);
+    Costmap map = maze(512, rng);
+    const auto start = std::chrono::steady_clock::now();
+    Inflation(InflationOptions(), footprintRadii(kFootprint).inscribed, kRes).apply(map);
+    std::printf("inflation 512x512: %.2f ms\n", millisecondsSince(start));
+  }
+  return 0;
+}
