@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <functional>
-#include <queue>
-#include <utility>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "navigation_core/cost_values.h"
 
@@ -39,60 +37,84 @@ LocalPlanner::LocalPlanner(const LocalPlannerOptions& options) : options_(option
 
 void LocalPlanner::distanceGrid(const Costmap& costmap, const std::vector<unsigned>& seeds,
                                 std::vector<double>& out) const {
-  // Dijkstra over 8-connected cells (diagonal steps cost sqrt 2) around obstacles: within 8 % of
-  // the Euclidean distance, where base_local_planner's 4-connected count is the Manhattan one and
-  // makes a robot heading diagonally to its goal look as well placed as one heading straight at it.
+  // Shortest paths over 8-connected cells around obstacles, straight steps 5 and diagonal ones 7
+  // (1.4, within 1 % of sqrt 2): within 8 % of the Euclidean distance, where base_local_planner's
+  // 4-connected count is the Manhattan one and makes a robot heading diagonally to its goal look as
+  // well placed as one heading straight at it. Integer weights let a bucket queue (Dial's
+  // algorithm) replace a heap: linear in the window.
+  constexpr unsigned kStraight = 5, kDiagonal = 7, kBuckets = kDiagonal + 1;
+  constexpr unsigned kNone = std::numeric_limits<unsigned>::max();
   const unsigned nx = costmap.sizeX(), ny = costmap.sizeY();
-  out.assign(costmap.costs().size(), kUnreachable);
-  using Entry = std::pair<double, unsigned>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+  const std::vector<std::uint8_t>& costs = costmap.costs();
+  std::vector<unsigned> distance(costs.size(), kNone);
+  std::vector<unsigned> buckets[kBuckets];
   for (const unsigned s : seeds) {
-    out[s] = 0.0;
-    open.push({0.0, s});
+    if (distance[s] == 0) continue;
+    distance[s] = 0;
+    buckets[0].push_back(s);
   }
-  while (!open.empty()) {
-    const auto [d, n] = open.top();
-    open.pop();
-    if (d > out[n]) continue;
-    const int x = static_cast<int>(n % nx), y = static_cast<int>(n / nx);
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        if ((dx == 0 && dy == 0) || x + dx < 0 || y + dy < 0 || x + dx >= static_cast<int>(nx) ||
-            y + dy >= static_cast<int>(ny))
-          continue;
-        const unsigned m = static_cast<unsigned>((y + dy) * static_cast<int>(nx) + x + dx);
-        if (blocksTheGrid(costmap.costs()[m])) continue;
-        const double next = d + (dx != 0 && dy != 0 ? M_SQRT2 : 1.0);
-        if (next < out[m]) {
-          out[m] = next;
-          open.push({next, m});
+  std::size_t waiting = seeds.empty() ? 0 : buckets[0].size();
+  for (unsigned d = 0; waiting > 0; ++d) {
+    std::vector<unsigned>& bucket = buckets[d % kBuckets];
+    for (std::size_t k = 0; k < bucket.size(); ++k) {
+      const unsigned n = bucket[k];
+      if (distance[n] != d) continue;  // reached more cheaply since
+      const unsigned x = n % nx, y = n / nx;
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          if ((dx == 0 && dy == 0) || (dx < 0 && x == 0) || (dy < 0 && y == 0) || (dx > 0 && x + 1 == nx) ||
+              (dy > 0 && y + 1 == ny))
+            continue;
+          const unsigned m = static_cast<unsigned>(static_cast<int>(n) + dy * static_cast<int>(nx) + dx);
+          if (blocksTheGrid(costs[m])) continue;
+          const unsigned next = d + (dx != 0 && dy != 0 ? kDiagonal : kStraight);
+          if (next < distance[m]) {
+            distance[m] = next;
+            buckets[next % kBuckets].push_back(m);
+            ++waiting;
+          }
         }
       }
     }
+    waiting -= bucket.size();
+    bucket.clear();
   }
+  out.resize(costs.size());
+  for (std::size_t i = 0; i < costs.size(); ++i)
+    out[i] = distance[i] == kNone ? kUnreachable : static_cast<double>(distance[i]) / kStraight;
 }
 
 double LocalPlanner::footprintCost(const Costmap& costmap, const Footprint& footprint, const Pose2& pose) const {
-  unsigned cx, cy;
-  if (!costmap.worldToMap(pose.x, pose.y, cx, cy)) return -1.0;
-  const std::uint8_t centre = costmap.cost(cx, cy);
+  // Cell lookups written out (this runs for every pose of every sampled trajectory).
+  const double res = costmap.resolution(), ox = costmap.originX(), oy = costmap.originY();
+  const double nx = costmap.sizeX(), ny = costmap.sizeY();
+  const std::vector<std::uint8_t>& costs = costmap.costs();
+  const auto cellAt = [&](double wx, double wy) -> int {
+    const double fx = (wx - ox) / res, fy = (wy - oy) / res;
+    if (!(fx >= 0 && fy >= 0 && fx < nx && fy < ny)) return -1;
+    return static_cast<int>(fy) * static_cast<int>(nx) + static_cast<int>(fx);
+  };
+  const int centre_cell = cellAt(pose.x, pose.y);
+  if (centre_cell < 0) return -1.0;
+  const std::uint8_t centre = costs[static_cast<std::size_t>(centre_cell)];
   if (centre >= kInscribedInflatedObstacle) return -1.0;  // lethal, inscribed or unknown under the centre
-  double highest = centre;
+  std::uint8_t highest = centre;
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
-  const double step = 0.5 * costmap.resolution();
+  const double step = 0.5 * res;
   for (std::size_t i = 0; i < footprint.size(); ++i) {
     const Point2& a = footprint[i];
     const Point2& b = footprint[(i + 1) % footprint.size()];
     const double ax = pose.x + c * a.x - s * a.y, ay = pose.y + s * a.x + c * a.y;
     const double bx = pose.x + c * b.x - s * b.y, by = pose.y + s * b.x + c * b.y;
-    const int n = std::max(1, static_cast<int>(std::ceil(std::hypot(bx - ax, by - ay) / step)));
-    for (int k = 0; k <= n; ++k) {  // along the outline every half cell
+    // At most half a cell apart along the outline (|dx| + |dy| bounds the edge's length).
+    const int n = std::max(1, static_cast<int>(std::ceil((std::abs(bx - ax) + std::abs(by - ay)) / step)));
+    for (int k = 0; k <= n; ++k) {
       const double t = static_cast<double>(k) / n;
-      unsigned mx, my;
-      if (!costmap.worldToMap(ax + t * (bx - ax), ay + t * (by - ay), mx, my)) return -1.0;
-      const std::uint8_t cost = costmap.cost(mx, my);
+      const int cell = cellAt(ax + t * (bx - ax), ay + t * (by - ay));
+      if (cell < 0) return -1.0;
+      const std::uint8_t cost = costs[static_cast<std::size_t>(cell)];
       if (cost == kLethalObstacle || cost == kNoInformation) return -1.0;
-      highest = std::max(highest, static_cast<double>(cost));
+      highest = std::max(highest, cost);
     }
   }
   return highest;
