@@ -5,9 +5,10 @@
 // its I/O thread (a wake-up on another CPU) for every message. A simulator running unthrottled
 // publishes ten thousand messages a second (/clock, scans, joint states), which then costs more
 // than its physics. So the loop hands each message over (a lock and a move) and one thread per
-// process publishes them, in the order they were handed over. It polls every 0.5 ms while
-// messages keep coming, as realtime_tools' RealtimePublisher does, so the loop never wakes it, and
-// sleeps when none have come for a while; the first message after that wakes it at once.
+// process publishes them, in the order they were handed over. It takes whatever has been handed
+// over since it last looked, publishes it, and looks again; finding nothing, it polls every 0.5 ms
+// (as realtime_tools' RealtimePublisher does), so a loop that keeps publishing never has to wake
+// it, and after 10 ms without a message it sleeps until the next one wakes it.
 //
 // Every message handed over is published, none is dropped or merged (unlike RealtimePublisher).
 // Delivery is later by at most a poll period, and in order across all topics of the process.
