@@ -111,14 +111,14 @@ def flush_c_stdout():
         pass
 
 
-def quiet(fn, *args):
-    """Runs fn with the C library's stdout (PyBullet's URDF-merging chatter) sent to /dev/null."""
+def quiet(fn, *args, **kwargs):
+    """Runs fn with the C library's stdout (PyBullet's banner and URDF chatter) sent to /dev/null."""
     flush_c_stdout()
     saved = os.dup(1)
     devnull = os.open(os.devnull, os.O_WRONLY)
     try:
         os.dup2(devnull, 1)
-        return fn(*args)
+        return fn(*args, **kwargs)
     finally:
         flush_c_stdout()
         os.dup2(saved, 1)

@@ -31,7 +31,6 @@ cylinders are L m long, discs in their mid-plane (the Pioneer's wheels are made 
 that a wheel touches the ground in its mid-plane instead of on one rim edge.
 """
 import argparse
-import ctypes
 import json
 import math
 import importlib
@@ -39,6 +38,8 @@ import os
 import sys
 import tempfile
 import xml.etree.ElementTree as ET
+
+from bench_pybullet import quiet  # the scripts folder: sys.path[0] when run
 
 DT = 0.001
 GRAVITY = -9.8
@@ -56,29 +57,6 @@ def gazebo_friction(root):
         b = float(m2.text) if m2 is not None else 1.0
         mu[ref] = 0.5 * (a + b)
     return mu
-
-
-def flush_c_stdout():
-    sys.stdout.flush()
-    try:
-        ctypes.CDLL(None).fflush(None)
-    except (OSError, AttributeError):
-        pass
-
-
-def quiet_call(fn, *args, **kwargs):
-    """Runs fn with the C library's stdout (PyBullet's banner and URDF chatter) sent to /dev/null."""
-    flush_c_stdout()
-    saved = os.dup(1)
-    devnull = os.open(os.devnull, os.O_WRONLY)
-    try:
-        os.dup2(devnull, 1)
-        return fn(*args, **kwargs)
-    finally:
-        flush_c_stdout()
-        os.dup2(saved, 1)
-        os.close(saved)
-        os.close(devnull)
 
 
 def yaw_of(q):
@@ -117,7 +95,7 @@ def parse_args():
 
 def main():
     args = parse_args()
-    p = quiet_call(importlib.import_module, 'pybullet')
+    p = quiet(importlib.import_module, 'pybullet')
 
     tree = ET.parse(args.urdf)
     root = tree.getroot()
@@ -134,7 +112,7 @@ def main():
         name, _, speed = item.partition('=')
         commands[name] = float(speed)
 
-    c = quiet_call(p.connect, p.DIRECT)
+    c = quiet(p.connect, p.DIRECT)
     p.setGravity(0, 0, GRAVITY, physicsClientId=c)
     p.setTimeStep(DT, physicsClientId=c)
     plane = p.createMultiBody(0, p.createCollisionShape(p.GEOM_PLANE, physicsClientId=c), physicsClientId=c)
@@ -143,7 +121,7 @@ def main():
     if args.implicit_cylinder:
         flags |= p.URDF_USE_IMPLICIT_CYLINDER
     try:
-        body = quiet_call(p.loadURDF, urdf, basePosition=[0, 0, args.z],
+        body = quiet(p.loadURDF, urdf, basePosition=[0, 0, args.z],
                           baseOrientation=p.getQuaternionFromEuler([0, 0, math.radians(args.yaw)]),
                           flags=flags, physicsClientId=c)
     finally:
