@@ -11,32 +11,23 @@ import os
 import numpy as np
 import yaml
 
-OCCUPIED, FREE, UNKNOWN = 0, 254, 205
-# map_server's map_saver thresholds (occupancy in percent) and the yaml it writes.
-OCCUPIED_THRESH, FREE_THRESH = 0.65, 0.196
+from map_files import save as map_saver  # map_server's writer
+
+OCCUPIED, FREE, UNKNOWN = map_saver.OCCUPIED, map_saver.FREE, map_saver.UNKNOWN
+# The mapper's thresholds, in whole per cent: occupied from map_server's occupied_thresh (65 %),
+# free up to its free_thresh (19.6 %), so that map_server reads the map back as it was saved.
+THRESHOLD_OCCUPIED, THRESHOLD_FREE = 65, 19
 
 
 def occupancy_to_image(data, width, height):
     """The PGM pixels (height x width uint8, top row = largest y) of an OccupancyGrid's data."""
-    cells = np.asarray(data, dtype=np.int16).reshape(height, width)
-    image = np.full((height, width), UNKNOWN, dtype=np.uint8)
-    image[(cells >= 0) & (cells <= FREE_THRESH * 100)] = FREE
-    image[cells >= OCCUPIED_THRESH * 100] = OCCUPIED
-    return np.flipud(image)
+    return map_saver.saver_image(data, width, height, THRESHOLD_OCCUPIED, THRESHOLD_FREE)
 
 
 def write_map(basename, data, width, height, resolution, origin):
     """Writes BASENAME.pgm and BASENAME.yaml as map_server's map_saver does; returns the two paths."""
-    image = occupancy_to_image(data, width, height)
-    pgm, yml = basename + '.pgm', basename + '.yaml'
-    with open(pgm, 'wb') as f:
-        f.write(b'P5\n# CREATOR: hector_style_mapping save_map %.3f m/pix\n%d %d\n255\n' % (resolution, width, height))
-        f.write(image.tobytes())
-    x, y, yaw = origin
-    with open(yml, 'w') as f:
-        f.write('image: %s\nresolution: %f\norigin: [%f, %f, %f]\nnegate: 0\noccupied_thresh: %s\nfree_thresh: %s\n'
-                % (os.path.basename(pgm), resolution, x, y, yaw, OCCUPIED_THRESH, FREE_THRESH))
-    return pgm, yml
+    return map_saver.write_map_files(basename, data, width, height, resolution, origin, THRESHOLD_OCCUPIED,
+                                     THRESHOLD_FREE)
 
 
 def read_map(yaml_path):

@@ -6,7 +6,10 @@ import numpy as np
 import pytest
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', '..', 'src'))
+# map_server's map_files (its writer is the mapper's): from the source tree, as before a build.
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', '..', '..', 'map_server', 'src'))
 from hector_style_mapping_tools import map_files  # noqa: E402
+from map_files import load as map_server_load  # noqa: E402
 
 
 def grid(width=6, height=4):
@@ -43,6 +46,16 @@ def test_written_map_reads_back_with_its_geometry(tmp_path):
     assert resolution == pytest.approx(0.05)
     assert origin == pytest.approx((-1.0, -0.5, 0.0))
     assert (image == map_files.occupancy_to_image(grid(), 6, 4)).all()
+
+
+
+def test_saved_maps_load_into_map_server(tmp_path):
+    data = [0, 100, -1, 19, 20, 65, 64, 0]  # 4 x 2, bottom row first
+    _, yml = map_files.write_map(str(tmp_path / 'mapped'), data, 4, 2, 0.05, (-2.0, -3.0, 0.0))
+    grid = map_server_load.load_map(yml)
+    assert (grid.width, grid.height, grid.resolution, grid.origin) == (4, 2, 0.05, (-2.0, -3.0, 0.0))
+    # Up to 19 % free, from 65 % occupied, the rest unknown, as map_server reads the thresholds back.
+    assert grid.data == [0, 100, -1, 0, -1, 100, -1, 0]
 
 
 def test_occupied_points_are_cell_centres_in_the_map_frame():

@@ -97,14 +97,3 @@ def test_map_saver_puts_the_maps_top_row_first():
     image = save.saver_image([0, 0, 100, 100], 2, 2)
     assert image.tolist() == [[0, 0], [254, 254]]
 
-
-def test_the_mappers_save_map_files_load_into_map_server(tmp_path):
-    # hector_style_mapping's save_map writes map_saver's files too (its free threshold is 19.6 %).
-    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', '..',
-                                    'hector_style_mapping', 'src'))
-    from hector_style_mapping_tools import map_files as mapper_files
-    data = [0, 100, -1, 19, 20, 65, 64, 0]
-    _, yml = mapper_files.write_map(str(tmp_path / 'mapped'), data, 4, 2, 0.05, (-2.0, -3.0, 0.0))
-    grid = load.load_map(yml)
-    assert (grid.width, grid.height, grid.resolution, grid.origin) == (4, 2, 0.05, (-2.0, -3.0, 0.0))
-    assert grid.data == [0, 100, -1, 0, -1, 100, -1, 0]
