@@ -71,10 +71,13 @@ void LayeredCostmap::updateOrigin(double robot_x, double robot_y) {
 void LayeredCostmap::resetObstacles() { obstacles_.reset(kNoInformation); }
 
 const Costmap& LayeredCostmap::update() {
-  master_.reset(defaultCost());
-  if (static_) {
-    // Written over the master where the static map covers it (unknown included), by world position.
-    for (unsigned y = 0; y < master_.sizeY(); ++y) {
+  if (static_ && !options_.rolling_window) {
+    master_.costs() = static_->costs();  // the same grid: setStaticMap gave the master its geometry
+  } else {
+    master_.reset(defaultCost());
+    // A rolling window: the static map written over it where it covers it (unknown included), by
+    // world position.
+    for (unsigned y = 0; static_ && y < master_.sizeY(); ++y) {
       for (unsigned x = 0; x < master_.sizeX(); ++x) {
         double wx, wy;
         master_.mapToWorld(x, y, wx, wy);
