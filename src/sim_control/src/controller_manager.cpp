@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <map>
-#include <set>
 
 #include "sim_control/controller_registry.h"
 
@@ -162,11 +161,12 @@ bool ControllerManager::switchControllers(const std::vector<std::string>& start,
 }
 
 void ControllerManager::updateDriven() {
-  driven_.clear();
+  for (JointData& joint : hw_.joints()) joint.driven = false;
   for (const auto& e : controllers_)
     if (e.state == State::Running)
-      for (const auto& claimed : e.controller->claimedResources()) driven_.insert(claimed.joints.begin(), claimed.joints.end());
-  for (JointData& joint : hw_.joints()) joint.driven = driven_.count(joint.name) > 0;
+      for (const auto& claimed : e.controller->claimedResources())
+        for (const std::string& name : claimed.joints)
+          if (JointData* joint = hw_.joint(name)) joint->driven = true;
 }
 
 bool ControllerManager::onLoad(controller_manager_msgs::LoadController::Request& req,

@@ -12,7 +12,6 @@
 #include <ros/ros.h>
 
 #include <memory>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -43,12 +42,10 @@ class ControllerManager {
     State state = State::Initialized;
   };
   const std::vector<Entry>& controllers() const { return controllers_; }
-  // Whether a running controller commands this joint; the hardware leaves the others undriven.
-  bool isDriven(const std::string& joint) const { return driven_.count(joint) > 0; }
 
  private:
   Entry* find(const std::string& name);
-  void updateDriven();
+  void updateDriven();  // each joint's driven flag from the running controllers' claims
   bool fail(const std::string& message, std::string& error);
 
   bool onLoad(controller_manager_msgs::LoadController::Request&, controller_manager_msgs::LoadController::Response&);
@@ -66,7 +63,6 @@ class ControllerManager {
   ros::NodeHandle robot_nh_;
   ros::Time last_time_;
   std::vector<Entry> controllers_;
-  std::set<std::string> driven_;
   std::vector<ros::ServiceServer> services_;
 };
 
