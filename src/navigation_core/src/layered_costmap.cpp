@@ -25,11 +25,15 @@ LayeredCostmap::LayeredCostmap(const LayeredCostmapOptions& options, const Footp
   master_ = Costmap(cellsFor(options.width, options.resolution), cellsFor(options.height, options.resolution),
                     options.resolution, options.origin_x, options.origin_y, defaultCost());
   obstacles_ = Costmap(master_.sizeX(), master_.sizeY(), options.resolution, options.origin_x, options.origin_y,
-                       kNoInformation);
+                       unseenObstacleCost());
 }
 
 std::uint8_t LayeredCostmap::defaultCost() const {
   return options_.track_unknown_space ? kNoInformation : kFreeSpace;
+}
+
+std::uint8_t LayeredCostmap::unseenObstacleCost() const {
+  return options_.obstacle_track_unknown_space ? kNoInformation : kFreeSpace;
 }
 
 void LayeredCostmap::setStaticMap(const Costmap& static_costs) {
@@ -38,12 +42,16 @@ void LayeredCostmap::setStaticMap(const Costmap& static_costs) {
   master_ = Costmap(static_costs.sizeX(), static_costs.sizeY(), static_costs.resolution(), static_costs.originX(),
                     static_costs.originY(), defaultCost());
   obstacles_ = Costmap(master_.sizeX(), master_.sizeY(), master_.resolution(), master_.originX(), master_.originY(),
-                       kNoInformation);
+                       unseenObstacleCost());
   inflation_ = Inflation(options_.inflation, footprintRadii(footprint_).inscribed, static_costs.resolution());
 }
 
 void LayeredCostmap::addObservation(const Observation& observation) {
   applyObservation(obstacles_, observation, options_.obstacles);
+}
+
+void LayeredCostmap::addObservation(const Observation& observation, const ObstacleLayerOptions& source) {
+  applyObservation(obstacles_, observation, source);
 }
 
 void LayeredCostmap::updateOrigin(double robot_x, double robot_y) {
@@ -55,7 +63,7 @@ void LayeredCostmap::updateOrigin(double robot_x, double robot_y) {
   const long shift_y = std::lround((want_y - obstacles_.originY()) / res);
   if (shift_x == 0 && shift_y == 0) return;
   Costmap moved(obstacles_.sizeX(), obstacles_.sizeY(), res, obstacles_.originX() + shift_x * res,
-                obstacles_.originY() + shift_y * res, kNoInformation);
+                obstacles_.originY() + shift_y * res, unseenObstacleCost());
   for (unsigned y = 0; y < moved.sizeY(); ++y) {
     for (unsigned x = 0; x < moved.sizeX(); ++x) {
       const long ox = static_cast<long>(x) + shift_x, oy = static_cast<long>(y) + shift_y;
@@ -68,7 +76,21 @@ void LayeredCostmap::updateOrigin(double robot_x, double robot_y) {
                     defaultCost());
 }
 
-void LayeredCostmap::resetObstacles() { obstacles_.reset(kNoInformation); }
+void LayeredCostmap::resetObstacles() { obstacles_.reset(unseenObstacleCost()); }
+
+void LayeredCostmap::resetObstaclesOutside(double x, double y, double size) {
+  const double res = obstacles_.resolution();
+  // The kept square in cells (cells whose centres lie inside it).
+  const double x0 = (x - size / 2 - obstacles_.originX()) / res - 0.5, x1 = (x + size / 2 - obstacles_.originX()) / res - 0.5;
+  const double y0 = (y - size / 2 - obstacles_.originY()) / res - 0.5, y1 = (y + size / 2 - obstacles_.originY()) / res - 0.5;
+  const std::uint8_t unseen = unseenObstacleCost();
+  for (unsigned my = 0; my < obstacles_.sizeY(); ++my) {
+    for (unsigned mx = 0; mx < obstacles_.sizeX(); ++mx) {
+      if (mx >= x0 && mx <= x1 && my >= y0 && my <= y1) continue;
+      obstacles_.setCost(mx, my, unseen);
+    }
+  }
+}
 
 const Costmap& LayeredCostmap::update() {
   if (static_ && !options_.rolling_window) {

@@ -84,7 +84,7 @@ void LocalPlanner::distanceGrid(const Costmap& costmap, const std::vector<unsign
     out[i] = distance[i] == kNone ? kUnreachable : static_cast<double>(distance[i]) / kStraight;
 }
 
-double LocalPlanner::footprintCost(const Costmap& costmap, const Footprint& footprint, const Pose2& pose) const {
+double LocalPlanner::footprintCost(const Costmap& costmap, const Footprint& footprint, const Pose2& pose) {
   // Cell lookups written out (this runs for every pose of every sampled trajectory).
   const double res = costmap.resolution(), ox = costmap.originX(), oy = costmap.originY();
   const double nx = costmap.sizeX(), ny = costmap.sizeY();
@@ -188,6 +188,7 @@ bool LocalPlanner::computeVelocity(const Costmap& costmap, const Footprint& foot
 
   best = Trajectory();
   const auto consider = [&](double vx, double vth) {
+    if (std::abs(vx) < options_.min_vel_trans && std::abs(vth) < options_.min_in_place_vel_theta) return;
     Velocity2 command;
     command.x = vx;
     command.theta = vth;

@@ -79,5 +79,34 @@ TEST(LayeredCostmap, ARollingWindowFollowsTheRobotAndKeepsWhatItStillCovers) {
   EXPECT_FALSE(master.worldToMap(-0.83, 0.02, mx, my));  // left behind
 }
 
+TEST(LayeredCostmap, AnObstacleLayerThatDoesNotTrackUnknownSpaceFreesTheStaticMapsUnknownCells) {
+  // costmap_2d's default: the obstacle layer's unseen cells are free, and the maximum of free and
+  // the static map's unknown is free.
+  LayeredCostmapOptions o;
+  o.inflate = false;
+  o.obstacle_track_unknown_space = false;
+  LayeredCostmap costmap(o, kFootprint);
+  costmap.setStaticMap(staticMap());
+  EXPECT_EQ(at(costmap.update(), 1.0, 2.8), kFreeSpace);
+  EXPECT_EQ(at(costmap.update(), 2.02, 1.0), kLethalObstacle);  // the walls stay
+  o.obstacle_track_unknown_space = true;
+  LayeredCostmap tracking(o, kFootprint);
+  tracking.setStaticMap(staticMap());
+  EXPECT_EQ(at(tracking.update(), 1.0, 2.8), kNoInformation);
+}
+
+TEST(LayeredCostmap, ResettingOutsideAWindowKeepsTheObstaclesInsideIt) {
+  LayeredCostmapOptions o;
+  o.inflate = false;
+  LayeredCostmap costmap(o, kFootprint);
+  costmap.setStaticMap(Costmap(80, 60, 0.05, 0.0, 0.0));
+  costmap.addObservation({{1.0, 1.0, 0.2}, {{1.42, 1.02, 0.2}, {1.62, 1.02, 0.2}, {3.02, 1.02, 0.2}}});
+  costmap.resetObstaclesOutside(1.0, 1.0, 1.0);  // keeps x, y in 0.5 .. 1.5
+  const Costmap& master = costmap.update();
+  EXPECT_EQ(at(master, 1.42, 1.02), kLethalObstacle);
+  EXPECT_EQ(at(master, 1.62, 1.02), kFreeSpace);  // unseen again: the static map's free
+  EXPECT_EQ(at(master, 3.02, 1.02), kFreeSpace);
+}
+
 }  // namespace
 }  // namespace navigation_core

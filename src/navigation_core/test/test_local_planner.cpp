@@ -102,6 +102,32 @@ TEST(LocalPlanner, ItTurnsTowardsAPathThatBendsLeft) {
   EXPECT_GT(best.velocity.theta, 0.0);
 }
 
+TEST(LocalPlanner, WithDwasLimitsAPathBehindTheRobotMakesItTurnInPlaceNotStandStill) {
+  // dwa_local_planner's set-up: min_vel_x 0 lets it sample standing still, which ends where a turn
+  // in place does and, near a wall (0.4 m off: the turning footprint sweeps inflated cells), scores
+  // better; min_vel_trans rules such non-moves out.
+  LocalPlannerOptions o;
+  o.min_vel_x = 0.0;
+  o.min_vel_trans = 0.1;
+  o.min_in_place_vel_theta = 0.8;
+  o.max_vel_theta = 2.0;
+  o.min_vel_theta = -2.0;
+  o.meter_scoring = true;
+  o.path_distance_bias = 32.0;
+  o.goal_distance_bias = 24.0;
+  o.occdist_scale = 0.02;
+  LocalPlanner planner(o);
+  const Costmap map = arena(Obstacle::kWall);
+  Trajectory best;
+  std::string why;
+  ASSERT_TRUE(planner.computeVelocity(map, kFootprint, {2.6, 2.5, M_PI / 2}, Velocity2(),
+                                      straightPlan({2.6, 2.5}, {2.6, 0.5}), best, &why))
+      << why;
+  EXPECT_GE(std::abs(best.velocity.theta), 0.8 - 1e-9);
+  EXPECT_LE(std::abs(best.velocity.theta), 2.0 + 1e-9);
+  EXPECT_LT(std::abs(best.velocity.x), 0.1);
+}
+
 TEST(LocalPlanner, ItReachesAGoalAheadWithoutTouchingAnything) {
   const DriveResult run = drive(arena(Obstacle::kNone), {1.0, 2.5, 0.3}, straightPlan({1.0, 2.5}, {3.5, 2.0}), 40.0, 0.10);
   EXPECT_FALSE(run.collided);

@@ -23,6 +23,10 @@ struct LayeredCostmapOptions {
   bool inflate = true;
   InflationOptions inflation;
   ObstacleLayerOptions obstacles;
+  // The obstacle layer's own track_unknown_space: without it, the cells its sensors have not seen
+  // are free and, combined by maximum, free the master's unknown cells too (upstream's behaviour).
+  // With no obstacle layer at all, leave it true: an all-unknown grid changes nothing.
+  bool obstacle_track_unknown_space = true;
 };
 
 class LayeredCostmap {
@@ -31,8 +35,10 @@ class LayeredCostmap {
 
   // The static layer's map. A costmap that does not roll takes its size, resolution and origin.
   void setStaticMap(const Costmap& static_costs);
-  // Marks and clears the obstacle grid (kept between updates, as the obstacle layer's).
+  // Marks and clears the obstacle grid (kept between updates, as the obstacle layer's), with the
+  // options' ranges or an observation source's own.
   void addObservation(const Observation& observation);
+  void addObservation(const Observation& observation, const ObstacleLayerOptions& source);
   // Rolling window: centre the costmap on the robot (origin snapped to whole cells).
   void updateOrigin(double robot_x, double robot_y);
   // Combines the layers into the master and returns it.
@@ -40,11 +46,15 @@ class LayeredCostmap {
 
   const Costmap& master() const { return master_; }
   const Footprint& footprint() const { return footprint_; }
-  // Every obstacle cell back to unseen (clear_costmaps, the recoveries' resets).
+  // Every obstacle cell back to unseen (clear_costmaps).
   void resetObstacles();
+  // The obstacle cells outside the square of side `size` centred on (x, y) back to unseen, as
+  // clear_costmap_recovery's resets do.
+  void resetObstaclesOutside(double x, double y, double size);
 
  private:
   std::uint8_t defaultCost() const;
+  std::uint8_t unseenObstacleCost() const;
 
   LayeredCostmapOptions options_;
   Footprint footprint_;

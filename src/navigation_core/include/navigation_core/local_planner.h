@@ -28,6 +28,10 @@ struct LocalPlannerOptions {  // base_local_planner's TrajectoryPlannerROS param
   double max_vel_x = 0.5, min_vel_x = 0.1;
   double max_vel_theta = 1.0, min_vel_theta = -1.0;
   double min_in_place_vel_theta = 0.4;
+  // dwa_local_planner's min_vel_trans: a sample slower than this that also turns slower than
+  // min_in_place_vel_theta is no move at all and is not considered (standing still would otherwise
+  // beat turning towards a path behind the robot). 0: TrajectoryPlannerROS, whose min_vel_x does it.
+  double min_vel_trans = 0.0;
   double heading_lookahead = 0.325;  // m: turning in place, look this far ahead along the heading
   double acc_lim_x = 2.5, acc_lim_theta = 3.2;
   double escape_vel = -0.1;  // backing out when nothing else is safe
@@ -60,9 +64,11 @@ class LocalPlanner {
   Trajectory simulate(const Costmap& costmap, const Footprint& footprint, const Pose2& pose,
                       const Velocity2& command) const;
 
+  // The highest cost under the footprint's outline at `pose`, or -1 if it touches an obstacle
+  // (lethal or unknown cells, off the map) or its centre is within the inscribed radius of one.
+  static double footprintCost(const Costmap& costmap, const Footprint& footprint, const Pose2& pose);
+
  private:
-  // The highest cost under the footprint's outline at `pose`, or -1 if it touches an obstacle.
-  double footprintCost(const Costmap& costmap, const Footprint& footprint, const Pose2& pose) const;
   void distanceGrid(const Costmap& costmap, const std::vector<unsigned>& seeds, std::vector<double>& out) const;
 
   LocalPlannerOptions options_;
