@@ -12,35 +12,39 @@ namespace {
 
 constexpr float kCostFactor = 0.8f;
 constexpr double kStep = 0.5;  // cells per gradient-descent step, as navfn
+constexpr float kDiagonal = static_cast<float>(M_SQRT1_2);
+// An obstacle's cost: no potential plus it is below kUnreached, so the wavefront never enters one.
+constexpr float kBlocked = std::numeric_limits<float>::infinity();
+constexpr std::uint16_t kPending = 0x100;  // in cell_, beside the costmap value
+// How many cells ahead in a round the spreading asks for the memory that a cell will read: on a
+// big map its rows are far apart, and the cache would miss them.
+constexpr std::size_t kPrefetchAhead = 8;
 
 }  // namespace
 
 void NavfnPlanner::loadCosts(const Costmap& costmap) {
   nx_ = costmap.sizeX();
   ny_ = costmap.sizeY();
-  cost_.assign(static_cast<std::size_t>(nx_) * ny_, kObstacle);
-  for (unsigned y = 1; y + 1 < ny_; ++y) {
-    for (unsigned x = 1; x + 1 < nx_; ++x) {
-      const std::uint8_t v = costmap.cost(x, y);
-      float c = kObstacle;
-      if (v < kInscribedInflatedObstacle)
-        c = std::min(kNeutral + kCostFactor * v, kObstacle - 1);
-      else if (v == kNoInformation && options_.allow_unknown)
-        c = kObstacle - 1;
-      cost_[y * nx_ + x] = c;
-    }
+  for (unsigned v = 0; v < 256; ++v) {
+    float cost = kBlocked;
+    if (v < kInscribedInflatedObstacle)
+      cost = std::min(kNeutral + kCostFactor * v, kObstacle - 1);
+    else if (v == kNoInformation && options_.allow_unknown)
+      cost = kObstacle - 1;
+    cost_of_[v] = cost_of_[v | kPending] = cost;
+    diagonal_cost_of_[v] = cost * kDiagonal;
+    diagonal_cost_of_[v | kPending] = kBlocked;  // a pending cell is not pushed again
   }
-}
-
-float NavfnPlanner::interpolatedPotential(unsigned n) const {
-  float ta = std::min(potential_[n - 1], potential_[n + 1]);
-  float tc = std::min(potential_[n - nx_], potential_[n + nx_]);
-  if (ta > tc) std::swap(ta, tc);
-  const float hf = cost_[n];
-  const float dc = tc - ta;
-  if (dc >= hf) return ta + hf;  // only one neighbour counts: a straight step
-  const float t = dc / hf;
-  return ta + hf * (-0.2301f * t * t + 0.5307f * t + 0.7040f);
+  // The costmap values themselves, costed through cost_of_: two bytes a cell where float costs
+  // would take four, as the spreading reads cells all over the map.
+  const std::size_t size = costmap.costs().size();
+  cell_.resize(size);
+  std::uint16_t* const cell = cell_.data();
+  std::copy(costmap.costs().begin(), costmap.costs().end(), cell);
+  // The map's outermost cells are obstacles, so that a cell's four neighbours are always on the map.
+  std::fill(cell, cell + nx_, kLethalObstacle);
+  std::fill(cell + size - nx_, cell + size, kLethalObstacle);
+  for (std::size_t row = nx_; row < size; row += nx_) cell[row - 1] = cell[row] = kLethalObstacle;
 }
 
 void NavfnPlanner::spread(unsigned source, unsigned target) {
@@ -48,38 +52,88 @@ void NavfnPlanner::spread(unsigned source, unsigned target) {
   // others wait in an overflow list until the threshold rises by kThresholdStep. Not exactly
   // Dijkstra's order (a cell may be updated twice) but linear in the map, where a heap is not.
   constexpr float kThresholdStep = 2 * kNeutral;
-  const std::size_t size = cost_.size();
+  const std::size_t size = cell_.size(), nx = nx_;
   potential_.assign(size, kUnreached);
-  std::vector<std::uint8_t> pending(size, 0);
-  std::vector<unsigned> current, next, overflow;
-  const auto push = [&](std::vector<unsigned>& list, unsigned m) {
-    if (!pending[m] && cost_[m] < kObstacle) {
-      pending[m] = 1;
-      list.push_back(m);
-    }
+  float* const potential = potential_.data();
+  std::uint16_t* const cell = cell_.data();
+  const float* const cost_of = cost_of_;
+  const float* const diagonal_cost_of = diagonal_cost_of_;
+  // Room for `more` cells after the first `count` of `list`.
+  const auto makeRoom = [](CellList& list, std::size_t more) {
+    if (list.count + more > list.cells.size()) list.cells.resize(list.count + more);
   };
-  potential_[source] = 0.0f;
-  for (const unsigned m : {source - 1, source + 1, source - nx_, source + nx_}) push(current, m);
-  float threshold = kObstacle;
-  while (!current.empty() || !overflow.empty()) {
-    for (const unsigned n : current) pending[n] = 0;
-    for (const unsigned n : current) {
-      const float candidate = interpolatedPotential(n);
-      if (!(candidate < potential_[n])) continue;
-      potential_[n] = candidate;
-      // Neighbours that this cell could improve go to the next round, or wait for a higher threshold.
-      std::vector<unsigned>& to = candidate < threshold ? next : overflow;
-      for (const unsigned m : {n - 1, n + 1, n - nx_, n + nx_})
-        if (potential_[m] > candidate + cost_[m] * static_cast<float>(M_SQRT1_2)) push(to, m);
+  current_.count = next_.count = overflow_.count = 0;
+
+  potential[source] = 0.0f;
+  makeRoom(current_, 4);
+  const std::size_t s = source;
+  for (const std::size_t m : {s - 1, s + 1, s - nx, s + nx}) {
+    if (cost_of[cell[m]] < kBlocked) {
+      cell[m] |= kPending;
+      current_.cells[current_.count++] = static_cast<unsigned>(m);
     }
-    current.swap(next);
-    next.clear();
-    if (current.empty()) {
-      threshold += kThresholdStep;
-      current.swap(overflow);
-    }
-    if (target < size && potential_[target] < kUnreached) break;  // reached: navfn stops here too
   }
+  float threshold = kObstacle;
+  while (current_.count != 0 || overflow_.count != 0) {
+    const unsigned* const cells = current_.cells.data();
+    const std::size_t cells_count = current_.count;
+    for (std::size_t k = 0; k < cells_count; ++k) cell[cells[k]] &= ~kPending;
+    // A cell writes four slots at most (below).
+    makeRoom(next_, 4 * cells_count);
+    makeRoom(overflow_, 4 * cells_count);
+    // [0]: overflow, [1]: next, chosen by index, not by a branch: a cell goes either way about as
+    // often.
+    unsigned* const lists[2] = {overflow_.cells.data(), next_.cells.data()};
+    std::size_t counts[2] = {overflow_.count, next_.count};
+    for (std::size_t k = 0; k < cells_count; ++k) {
+      if (k + kPrefetchAhead < cells_count) {
+        const std::size_t ahead = cells[k + kPrefetchAhead];
+        for (const std::size_t row : {ahead - nx, ahead, ahead + nx}) {
+          __builtin_prefetch(potential + row);
+          __builtin_prefetch(cell + row);
+        }
+      }
+      const std::size_t n = cells[k];
+      // navfn's quadratic interpolation from the lower neighbour on each axis.
+      const float left = potential[n - 1], right = potential[n + 1], up = potential[n - nx], down = potential[n + nx];
+      const float a = std::min(left, right), b = std::min(up, down);
+      const float ta = std::min(a, b), tc = std::max(a, b);
+      const float hf = cost_of[cell[n]];
+      const float dc = tc - ta;
+      const float t = dc / hf;
+      // dc >= hf: only one neighbour counts, a straight step.
+      const float candidate = dc >= hf ? ta + hf : ta + hf * (-0.2301f * t * t + 0.5307f * t + 0.7040f);
+      if (!(candidate < potential[n])) continue;
+      potential[n] = candidate;
+      // Neighbours that this cell could improve go to the next round, or wait for a higher
+      // threshold. Appended without branches (the slot is written either way, kept only if
+      // pushed): whether a neighbour goes is data that branch prediction cannot guess.
+      const int low = candidate < threshold;
+      unsigned* const out = lists[low];
+      std::size_t count = counts[low];
+      const auto push = [&](std::size_t m, float pm) {
+        const bool go = pm > candidate + diagonal_cost_of[cell[m]];
+        out[count] = static_cast<unsigned>(m);
+        count += go;
+        cell[m] |= go ? kPending : 0;
+      };
+      push(n - 1, left);
+      push(n + 1, right);
+      push(n - nx, up);
+      push(n + nx, down);
+      counts[low] = count;
+    }
+    overflow_.count = counts[0];
+    next_.count = counts[1];
+    std::swap(current_, next_);
+    next_.count = 0;
+    if (current_.count == 0) {
+      threshold += kThresholdStep;
+      std::swap(current_, overflow_);
+    }
+    if (target < size && potential[target] < kUnreached) break;  // reached: navfn stops here too
+  }
+  // Cells left pending keep their flag: the next plan loads cell_ afresh.
 }
 
 void NavfnPlanner::gradientAt(unsigned n, double& gx, double& gy) const {
@@ -167,7 +221,7 @@ std::vector<Point2> NavfnPlanner::makePlan(const Costmap& costmap, const Point2&
   // The robot's own cell is passable whatever the costmap says (NavfnROS clears it), unless it is
   // on the map's edge.
   if (sx == 0 || sy == 0 || sx + 1 >= nx_ || sy + 1 >= ny_) return fail("the robot is on the costmap's edge");
-  cost_[source] = kNeutral;
+  cell_[source] = kFreeSpace;  // costs kNeutral
   spread(source, target);
 
   const double res = costmap.resolution();

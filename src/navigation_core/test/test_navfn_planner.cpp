@@ -108,6 +108,35 @@ TEST(NavfnPlanner, AGoalInAnObstacleIsReplacedWithinTheTolerance) {
   expectPassable(map, path, kLethalObstacle);
 }
 
+// The planner keeps its buffers from plan to plan: a plan must not depend on what came before it,
+// on a map of the same size or another.
+TEST(NavfnPlanner, AReusedPlannerPlansAsAFreshOne) {
+  Costmap small(60, 60, kRes, 0, 0);
+  for (unsigned y = 10; y < 50; ++y) small.setCost(30, y, kLethalObstacle);
+  const Costmap gap = wallWithGap(kLethalObstacle, true), walled = wallWithGap(kLethalObstacle, false);
+  struct Case {
+    const Costmap* map;
+    Point2 start, goal;
+  };
+  const std::vector<Case> cases = {{&gap, {1.0, 1.0}, {4.0, 1.0}},    {&small, {0.5, 1.5}, {2.5, 1.5}},
+                                   {&walled, {1.0, 1.0}, {4.0, 1.0}}, {&gap, {4.5, 4.5}, {0.3, 0.4}},
+                                   {&small, {2.5, 0.2}, {0.4, 2.8}},  {&gap, {1.0, 1.0}, {4.0, 1.0}}};
+  NavfnPlanner reused;
+  for (const Case& c : cases) {
+    NavfnPlanner fresh;
+    std::string why_reused, why_fresh;
+    const std::vector<Point2> path = reused.makePlan(*c.map, c.start, c.goal, 0.0, &why_reused);
+    const std::vector<Point2> expected = fresh.makePlan(*c.map, c.start, c.goal, 0.0, &why_fresh);
+    ASSERT_EQ(path.size(), expected.size()) << why_reused;
+    for (std::size_t k = 0; k < path.size(); ++k) {
+      EXPECT_EQ(path[k].x, expected[k].x) << k;
+      EXPECT_EQ(path[k].y, expected[k].y) << k;
+    }
+    EXPECT_EQ(why_reused, why_fresh);
+    EXPECT_TRUE(reused.potential() == fresh.potential());
+  }
+}
+
 TEST(NavfnPlanner, StartOrGoalOffTheMapIsSaid) {
   const Costmap map(20, 20, kRes, 0, 0);
   NavfnPlanner planner;

@@ -9,6 +9,7 @@
 // 50 + 0.8 c; lethal and inscribed cells (and unknown ones unless allow_unknown) are obstacles,
 // unknown ones with allow_unknown cost what the dearest passable cell does. The map's outermost
 // cells are obstacles, as navfn makes them.
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -43,19 +44,31 @@ class NavfnPlanner {
   static constexpr float kObstacle = 254.0f;
 
  private:
+  // A list of cells whose storage lasts from plan to plan: the first `count` of `cells` are in it.
+  struct CellList {
+    std::vector<unsigned> cells;
+    std::size_t count = 0;
+  };
+
   void loadCosts(const Costmap& costmap);
   // Spreads the potential from cell `source` until cell `target` is reached (or everywhere: pass
   // a target past the end).
   void spread(unsigned source, unsigned target);
-  float interpolatedPotential(unsigned index) const;
   // Gradient descent from continuous cell coordinates (x, y) to the source; false if stuck.
   bool descend(double x, double y, std::vector<Point2>& cells) const;
   void gradientAt(unsigned index, double& gx, double& gy) const;
 
   NavfnOptions options_;
   unsigned nx_ = 0, ny_ = 0;
-  std::vector<float> cost_;       // navfn's cost per cell; kObstacle blocks
+  // Per cell: its costmap value (lethal on the map's border), with kPending (0x100) set while the
+  // cell waits in next_ or overflow_.
+  std::vector<std::uint16_t> cell_;
+  // navfn's cost of a cell_ entry (infinite for an obstacle), and that times sqrt(1/2): a
+  // neighbour is worth pushing when its potential exceeds a cell's by more (never when pending).
+  float cost_of_[512], diagonal_cost_of_[512];
   std::vector<float> potential_;
+  // The wavefront's lists, kept from plan to plan so that a plan need not allocate.
+  CellList current_, next_, overflow_;
 };
 
 }  // namespace navigation_core
