@@ -97,7 +97,10 @@ double LocalPlanner::footprintCost(const Costmap& costmap, const Footprint& foot
   const int centre_cell = cellAt(pose.x, pose.y);
   if (centre_cell < 0) return -1.0;
   const std::uint8_t centre = costs[static_cast<std::size_t>(centre_cell)];
-  if (centre >= kInscribedInflatedObstacle) return -1.0;  // lethal, inscribed or unknown under the centre
+  // As base_local_planner's polygon check: lethal or unknown under the centre or the outline. An
+  // inscribed centre alone (the robot pushed near a wall, e.g. by slip) does not forbid a move,
+  // else nothing could get it out again.
+  if (centre == kLethalObstacle || centre == kNoInformation) return -1.0;
   std::uint8_t highest = centre;
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
   const double step = 0.5 * res;

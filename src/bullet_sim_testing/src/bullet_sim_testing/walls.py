@@ -40,6 +40,12 @@ class Wall:
             return math.hypot(max(du, 0.0), max(dv, 0.0))
         return -max(du, dv)
 
+    def contains(self, px, py):
+        """Whether (px, py) is inside the box (on its outline counts)."""
+        c, s = math.cos(self.yaw), math.sin(self.yaw)
+        u, v = c * (px - self.x) + s * (py - self.y), -s * (px - self.x) + c * (py - self.y)
+        return abs(u) <= self.sx / 2 and abs(v) <= self.sy / 2
+
 
 def load_walls(path):
     """The walls of a maze yaml, in the world frame."""

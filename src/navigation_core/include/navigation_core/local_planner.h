@@ -64,8 +64,8 @@ class LocalPlanner {
   Trajectory simulate(const Costmap& costmap, const Footprint& footprint, const Pose2& pose,
                       const Velocity2& command) const;
 
-  // The highest cost under the footprint's outline at `pose`, or -1 if it touches an obstacle
-  // (lethal or unknown cells, off the map) or its centre is within the inscribed radius of one.
+  // The highest cost under the footprint's outline and centre at `pose`, or -1 if they touch an
+  // obstacle (lethal or unknown cells, off the map), as base_local_planner checks a polygon.
   static double footprintCost(const Costmap& costmap, const Footprint& footprint, const Pose2& pose);
 
  private:
