@@ -250,7 +250,10 @@ bool LocalPlannerROS::computeVelocityCommands(geometry_msgs::Twist& command, std
   command.linear.x = cmd.x;
   command.linear.y = cmd.y;
   command.angular.z = cmd.theta;
-  last_command_ = cmd;
+  {
+    std::lock_guard<std::mutex> guard(odom_mutex_);
+    last_command_ = cmd;
+  }
   publishPlans(remaining, phase == nc::GoalPhase::kApproaching && ok ? &best : nullptr);
   return ok;
 }
