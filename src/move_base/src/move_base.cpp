@@ -53,7 +53,6 @@ MoveBase::MoveBase(tf2_ros::Buffer& tf) : tf_(tf), private_nh_("~") {
   oscillation_timeout_ = param(private_nh_, "oscillation_timeout", 0.0);
   oscillation_distance_ = param(private_nh_, "oscillation_distance", 0.5);
   recovery_behavior_enabled_ = param(private_nh_, "recovery_behavior_enabled", true);
-  make_plan_clear_costmap_ = param(private_nh_, "make_plan_clear_costmap", true);
   make_plan_add_unreachable_goal_ = param(private_nh_, "make_plan_add_unreachable_goal", true);
   if (param(private_nh_, "shutdown_costmaps", false))
     ROS_WARN("~shutdown_costmaps is not supported: the costmaps keep running between goals.");

@@ -60,7 +60,7 @@ class MoveBase {
   int max_planning_retries_;
   double oscillation_timeout_, oscillation_distance_;
   bool recovery_behavior_enabled_;
-  bool make_plan_clear_costmap_, make_plan_add_unreachable_goal_;
+  bool make_plan_add_unreachable_goal_;
 
   ros::Publisher cmd_vel_pub_, current_goal_pub_, action_goal_pub_, recovery_status_pub_;
   ros::Subscriber simple_goal_sub_;
