@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -196,11 +197,17 @@ void CostmapROS::readLayers() {
     }
   }
   options_.inflate = have_inflation;
-  if (!have_obstacle_layer) options_.obstacle_track_unknown_space = true;  // an all-unknown grid adds nothing
+  if (!have_obstacle_layer) {
+    options_.obstacle_track_unknown_space = true;  // an all-unknown grid adds nothing
+    options_.footprint_clearing_enabled = false;   // nor clears anything
+  }
 }
 
 void CostmapROS::readObstacleLayer(const ros::NodeHandle& layer_nh, bool first) {
-  if (first) options_.obstacle_track_unknown_space = param(layer_nh, "track_unknown_space", options_.track_unknown_space);
+  if (first) {
+    options_.obstacle_track_unknown_space = param(layer_nh, "track_unknown_space", options_.track_unknown_space);
+    options_.footprint_clearing_enabled = param(layer_nh, "footprint_clearing_enabled", true);
+  }
   const double layer_max_height = param(layer_nh, "max_obstacle_height", 2.0);
   std::istringstream names(param<std::string>(layer_nh, "observation_sources", ""));
   std::string source_name;
@@ -428,7 +435,7 @@ void CostmapROS::updateMap() {
       s->pending.pop_front();
     }
   }
-  layers_->update();
+  layers_->update(have_pose ? std::optional<nc::Pose2>(pose) : std::nullopt);
   if (have_pose) publishFootprint(pose);
 }
 

@@ -37,13 +37,21 @@ std::uint8_t LayeredCostmap::unseenObstacleCost() const {
 }
 
 void LayeredCostmap::setStaticMap(const Costmap& static_costs) {
+  const bool same_geometry = static_ && static_->sizeX() == static_costs.sizeX() &&
+                             static_->sizeY() == static_costs.sizeY() &&
+                             static_->resolution() == static_costs.resolution() &&
+                             static_->originX() == static_costs.originX() && static_->originY() == static_costs.originY();
   static_ = static_costs;
-  if (options_.rolling_window) return;
-  master_ = Costmap(static_costs.sizeX(), static_costs.sizeY(), static_costs.resolution(), static_costs.originX(),
-                    static_costs.originY(), defaultCost());
-  obstacles_ = Costmap(master_.sizeX(), master_.sizeY(), master_.resolution(), master_.originX(), master_.originY(),
-                       unseenObstacleCost());
-  inflation_ = Inflation(options_.inflation, footprintRadii(footprint_).inscribed, static_costs.resolution());
+  if (!options_.rolling_window && !same_geometry) {
+    // A new size: every layer starts again on the map's grid, as costmap_2d resizes them.
+    master_ = Costmap(static_costs.sizeX(), static_costs.sizeY(), static_costs.resolution(), static_costs.originX(),
+                      static_costs.originY(), defaultCost());
+    obstacles_ = Costmap(master_.sizeX(), master_.sizeY(), master_.resolution(), master_.originX(), master_.originY(),
+                         unseenObstacleCost());
+    inflation_ = Inflation(options_.inflation, footprintRadii(footprint_).inscribed, static_costs.resolution());
+  }
+  // The master at once: a planner reading it before the next update must not find it blank.
+  update();
 }
 
 void LayeredCostmap::addObservation(const Observation& observation) {
@@ -92,7 +100,8 @@ void LayeredCostmap::resetObstaclesOutside(double x, double y, double size) {
   }
 }
 
-const Costmap& LayeredCostmap::update() {
+const Costmap& LayeredCostmap::update(const std::optional<Pose2>& robot) {
+  if (robot && options_.footprint_clearing_enabled) clearFootprint(obstacles_, footprint_, *robot);
   if (static_ && !options_.rolling_window) {
     master_.costs() = static_->costs();  // the same grid: setStaticMap gave the master its geometry
   } else {

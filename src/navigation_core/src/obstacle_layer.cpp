@@ -74,3 +74,40 @@ void applyObservation(Costmap& layer, const Observation& observation, const Obst
 }
 
 }  // namespace navigation_core
+
+namespace navigation_core {
+
+void clearFootprint(Costmap& layer, const Footprint& footprint, const Pose2& pose) {
+  if (footprint.size() < 3) return;
+  const std::vector<Point2> outline = outlinePoints(footprint, pose, 0.5 * layer.resolution());
+  double min_x = outline[0].x, max_x = min_x, min_y = outline[0].y, max_y = min_y;
+  for (const Point2& p : outline) {
+    unsigned mx, my;
+    if (layer.worldToMap(p.x, p.y, mx, my)) layer.setCost(mx, my, kFreeSpace);
+    min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
+    min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
+  }
+  // The interior: cells whose centres lie inside the polygon (even-odd rule).
+  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
+  std::vector<Point2> polygon;
+  for (const Point2& v : footprint) polygon.push_back({pose.x + c * v.x - s * v.y, pose.y + s * v.x + c * v.y});
+  const double res = layer.resolution();
+  const long x0 = std::max(0L, static_cast<long>(std::floor((min_x - layer.originX()) / res)));
+  const long y0 = std::max(0L, static_cast<long>(std::floor((min_y - layer.originY()) / res)));
+  const long x1 = std::min(static_cast<long>(layer.sizeX()) - 1, static_cast<long>(std::floor((max_x - layer.originX()) / res)));
+  const long y1 = std::min(static_cast<long>(layer.sizeY()) - 1, static_cast<long>(std::floor((max_y - layer.originY()) / res)));
+  for (long my = y0; my <= y1; ++my) {
+    for (long mx = x0; mx <= x1; ++mx) {
+      double wx, wy;
+      layer.mapToWorld(static_cast<unsigned>(mx), static_cast<unsigned>(my), wx, wy);
+      bool inside = false;
+      for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+        const Point2 &a = polygon[i], &b = polygon[j];
+        if ((a.y > wy) != (b.y > wy) && wx < a.x + (wy - a.y) * (b.x - a.x) / (b.y - a.y)) inside = !inside;
+      }
+      if (inside) layer.setCost(static_cast<unsigned>(mx), static_cast<unsigned>(my), kFreeSpace);
+    }
+  }
+}
+
+}  // namespace navigation_core

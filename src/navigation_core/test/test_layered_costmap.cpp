@@ -1,6 +1,8 @@
 // The layers combined as costmap_2d combines them, and the rolling window.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "navigation_core/cost_values.h"
 #include "navigation_core/layered_costmap.h"
 
@@ -106,6 +108,53 @@ TEST(LayeredCostmap, ResettingOutsideAWindowKeepsTheObstaclesInsideIt) {
   EXPECT_EQ(at(master, 1.42, 1.02), kLethalObstacle);
   EXPECT_EQ(at(master, 1.62, 1.02), kFreeSpace);  // unseen again: the static map's free
   EXPECT_EQ(at(master, 3.02, 1.02), kFreeSpace);
+}
+
+// A map arriving between two updates (the mapper publishes one every few seconds) must not leave
+// the master blank until the next update: a planner reading it then would plan through walls.
+TEST(LayeredCostmap, ANewStaticMapIsCombinedAtOnceAndKeepsTheObstaclesOfTheSameGrid) {
+  LayeredCostmapOptions o;
+  o.track_unknown_space = true;
+  o.inflate = false;
+  LayeredCostmap costmap(o, kFootprint);
+  costmap.setStaticMap(staticMap());
+  EXPECT_EQ(at(costmap.master(), 2.02, 1.0), kLethalObstacle);
+  costmap.addObservation({{0.5, 1.0, 0.2}, {{1.5, 1.0, 0.2}}});
+  costmap.update();
+  costmap.setStaticMap(staticMap());  // the same grid again, no update after it
+  EXPECT_EQ(at(costmap.master(), 2.02, 1.0), kLethalObstacle);
+  EXPECT_EQ(at(costmap.master(), 1.52, 1.02), kLethalObstacle);
+  EXPECT_EQ(at(costmap.master(), 1.0, 2.8), kNoInformation);
+  EXPECT_EQ(at(costmap.master(), 1.0, 1.0), kFreeSpace);
+  // A grown map: the new size at once, the obstacles started again.
+  Costmap bigger(100, 60, 0.05, 0.0, 0.0);
+  costmap.setStaticMap(bigger);
+  EXPECT_EQ(costmap.master().sizeX(), 100u);
+  EXPECT_EQ(at(costmap.master(), 1.52, 1.02), kFreeSpace);
+}
+
+// ObstacleLayer's footprint_clearing_enabled: what was marked under the robot is freed on the
+// update that knows where the robot is, cells next to it stay marked, and the option turns it off.
+TEST(LayeredCostmap, ObstacleCellsUnderTheFootprintAreFreedWhenTheRobotsPoseIsGiven) {
+  for (const bool clearing : {true, false}) {
+    LayeredCostmapOptions o;
+    o.inflate = false;
+    o.footprint_clearing_enabled = clearing;
+    LayeredCostmap costmap(o, kFootprint);
+    // Marks in a 1 m window about the robot at (5, 5) turned by 90 degrees: its 0.24 m length along
+    // y now, 0.18 m width along x.
+    const Observation seen{{5.0, 5.0, 0.2}, {{5.0, 5.10, 0.2}, {5.07, 5.0, 0.2}, {5.0, 5.22, 0.2}, {5.17, 5.0, 0.2}}};
+    costmap.addObservation(seen, ObstacleLayerOptions{});
+    const Costmap& master = costmap.update(Pose2{5.0, 5.0, M_PI / 2});
+    const std::uint8_t under = clearing ? kFreeSpace : kLethalObstacle;
+    EXPECT_EQ(at(master, 5.0, 5.10), under) << "inside, near the front edge";
+    EXPECT_EQ(at(master, 5.07, 5.0), under) << "on the side edge's cell";
+    EXPECT_EQ(at(master, 5.0, 5.22), kLethalObstacle) << "0.10 m beyond the front edge";
+    EXPECT_EQ(at(master, 5.17, 5.0), kLethalObstacle) << "0.08 m beyond the side edge";
+    // Without the pose (no tf yet) nothing is freed.
+    costmap.addObservation(seen, ObstacleLayerOptions{});
+    EXPECT_EQ(at(costmap.update(), 5.0, 5.10), kLethalObstacle);
+  }
 }
 
 }  // namespace

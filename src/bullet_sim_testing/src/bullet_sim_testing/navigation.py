@@ -92,12 +92,20 @@ class NavigationChecks:
     # --- helpers ------------------------------------------------------------------------------------
 
     def world_pose(self):
+        end = rospy.get_time() + 10.0
+        while not self.truth and rospy.get_time() < end:  # the recorder's first sample
+            rospy.sleep(0.05)
         with self.lock:
             return self.truth[-1][1:]
 
     def map_to_world(self, x, y):
         mx, my, myaw = self.MAP_IN_WORLD
         return (mx + math.cos(myaw) * x - math.sin(myaw) * y, my + math.sin(myaw) * x + math.cos(myaw) * y)
+
+    def world_to_map(self, x, y, yaw=0.0):
+        mx, my, myaw = self.MAP_IN_WORLD
+        dx, dy = x - mx, y - my
+        return (math.cos(myaw) * dx + math.sin(myaw) * dy, -math.sin(myaw) * dx + math.cos(myaw) * dy, yaw - myaw)
 
     @staticmethod
     def goal(x, y, yaw=0.0, frame='map'):

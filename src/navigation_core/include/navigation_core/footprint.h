@@ -12,6 +12,14 @@ struct Point2 {
 };
 using Footprint = std::vector<Point2>;
 
+struct Pose2 {  // a robot's pose in a costmap's frame
+  double x = 0.0, y = 0.0, theta = 0.0;
+};
+
+// The footprint's outline in the world at `pose`, at most `step` m between points (vertices
+// included): the points the planners check against a costmap.
+std::vector<Point2> outlinePoints(const Footprint& footprint, const Pose2& pose, double step);
+
 // costmap_2d's circle for `robot_radius`: 16 points on it.
 Footprint footprintFromRadius(double radius);
 

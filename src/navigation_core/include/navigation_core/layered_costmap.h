@@ -27,13 +27,17 @@ struct LayeredCostmapOptions {
   // are free and, combined by maximum, free the master's unknown cells too (upstream's behaviour).
   // With no obstacle layer at all, leave it true: an all-unknown grid changes nothing.
   bool obstacle_track_unknown_space = true;
+  // The obstacle layer's footprint_clearing_enabled (upstream's default): on each update the cells
+  // under the robot's footprint are freed in the obstacle grid. Off where there is no obstacle layer.
+  bool footprint_clearing_enabled = true;
 };
 
 class LayeredCostmap {
  public:
   LayeredCostmap(const LayeredCostmapOptions& options, const Footprint& footprint);
 
-  // The static layer's map. A costmap that does not roll takes its size, resolution and origin.
+  // The static layer's map. A costmap that does not roll takes its size, resolution and origin
+  // (keeping its obstacles if they have not changed). The master is combined again at once.
   void setStaticMap(const Costmap& static_costs);
   // Marks and clears the obstacle grid (kept between updates, as the obstacle layer's), with the
   // options' ranges or an observation source's own.
@@ -41,8 +45,9 @@ class LayeredCostmap {
   void addObservation(const Observation& observation, const ObstacleLayerOptions& source);
   // Rolling window: centre the costmap on the robot (origin snapped to whole cells).
   void updateOrigin(double robot_x, double robot_y);
-  // Combines the layers into the master and returns it.
-  const Costmap& update();
+  // Combines the layers into the master and returns it; with the robot's pose, first frees the
+  // obstacle cells under its footprint (footprint_clearing_enabled).
+  const Costmap& update(const std::optional<Pose2>& robot = std::nullopt);
 
   const Costmap& master() const { return master_; }
   const Footprint& footprint() const { return footprint_; }

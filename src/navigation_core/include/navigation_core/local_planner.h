@@ -17,9 +17,6 @@
 
 namespace navigation_core {
 
-struct Pose2 {
-  double x = 0.0, y = 0.0, theta = 0.0;
-};
 struct Velocity2 {
   double x = 0.0, y = 0.0, theta = 0.0;  // in the robot's frame
 };

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "navigation_core/costmap.h"
+#include "navigation_core/footprint.h"
 
 namespace navigation_core {
 
@@ -29,5 +30,11 @@ struct ObstacleLayerOptions {  // an observation source's parameters and costmap
 // Clears along every ray (the cells from the sensor's to just before the point's, up to
 // raytrace_range), then marks the points (as costmap_2d: all clearing first, then marking).
 void applyObservation(Costmap& layer, const Observation& observation, const ObstacleLayerOptions& options);
+
+// ObstacleLayer's footprint_clearing_enabled: the cells under the robot (inside its footprint at
+// `pose`, and every cell its outline crosses) set free. The robot occupies them, so what a sensor
+// marked there is the robot itself, a reflection, or a wall the padding merely grazes; left marked
+// it would forbid every move, rotating away included.
+void clearFootprint(Costmap& layer, const Footprint& footprint, const Pose2& pose);
 
 }  // namespace navigation_core
