@@ -19,8 +19,8 @@ from bullet_sim_testing.mobile import yaw_of
 from bullet_sim_testing.walls import load_walls
 
 
-def outline(length, width, step=0.02):
-    """Points along a length x width rectangle about the origin (robot frame)."""
+def outline(length, width, step=0.02, centre_x=0.0):
+    """Points along a length x width rectangle centred at (centre_x, 0) (robot frame)."""
     points = []
     for k in range(int(length / step) + 1):
         x = -length / 2 + k * length / int(length / step)
@@ -28,13 +28,14 @@ def outline(length, width, step=0.02):
     for k in range(int(width / step) + 1):
         y = -width / 2 + k * width / int(width / step)
         points += [(-length / 2, y), (length / 2, y)]
-    return points
+    return [(centre_x + x, y) for x, y in points]
 
 
 class NavigationChecks:
     MODEL = None             # model name in the simulator
     WALLS = None             # the maze's walls yaml
     OUTLINE = None           # (length, width) of the robot's outline, wheels included (m)
+    OUTLINE_CENTRE_X = 0.0   # where the outline's centre is ahead of the base frame (m)
     MAP_IN_WORLD = (0.0, 0.0, 0.0)  # the map frame's pose in the world (x, y, yaw)
     XY_TOLERANCE = None      # the local planner's xy_goal_tolerance (m)
     MAPPER_ERROR = 0.06      # m the mapper's pose may be off the truth
@@ -54,7 +55,7 @@ class NavigationChecks:
         rospy.Subscriber('move_base/result', MoveBaseActionResult, cls._on_result, queue_size=10)
         cls.truth = []
         cls.contacts = []
-        cls.points = outline(*cls.OUTLINE)
+        cls.points = outline(*cls.OUTLINE, centre_x=cls.OUTLINE_CENTRE_X)
         cls.recording = True
         cls.recorder = threading.Thread(target=cls._record, daemon=True)
         cls.recorder.start()
