@@ -149,12 +149,11 @@ void Simulator::run() {
     if (paused_) continue;
     stepOnce();
 
-    // Target speed: real_time_factor, capped by real_time_update_rate * step as in Gazebo;
-    // either at 0 means as fast as possible.
+    // Target speed: real_time_update_rate steps a second, as Gazebo paces (its real_time_factor
+    // is only the figure the two should give); 0 means as fast as possible. So
+    // set_physics_properties' max_update_rate 5000 with 1 ms steps runs at 5 x, as in Gazebo.
     const PhysicsSettings& s = physics_.settings();
-    const double target = (s.real_time_factor > 0 && s.real_time_update_rate > 0)
-                              ? std::min(s.real_time_factor, s.real_time_update_rate * s.max_step_size)
-                              : 0.0;
+    const double target = s.real_time_update_rate > 0 ? s.real_time_update_rate * s.max_step_size : 0.0;
     if (target <= 0) continue;
     const ros::WallTime wall = ros::WallTime::now();
     if (pace_wall_start_.isZero()) {

@@ -64,6 +64,24 @@ class GazeboApiTest(unittest.TestCase):
         self.gz.set_physics_properties(time_step=physics.time_step, max_update_rate=physics.max_update_rate,
                                        gravity=physics.gravity, ode_config=config)
 
+    def test_max_update_rate_sets_the_pace_as_in_gazebo(self):
+        # empty.world: 1 ms steps at 1000 steps a second (real time) and real_time_factor 1, which,
+        # as in Gazebo, does not cap the pace: 3000 steps a second is 3x real time.
+        physics = self.gz.get_physics_properties()
+        try:
+            done = self.gz.set_physics_properties(time_step=physics.time_step, max_update_rate=3000.0,
+                                                  gravity=physics.gravity, ode_config=physics.ode_config)
+            self.assertTrue(done.success, done.status_message)
+            t0, w0 = self.gz.sim_time(), time.monotonic()
+            self.gz.run_for(3.0)
+            factor = (self.gz.sim_time() - t0) / (time.monotonic() - w0)
+            # At most the pace asked for (a little over: run_for's polling), and well above real time.
+            self.assertGreater(factor, 1.8)
+            self.assertLess(factor, 3.3)
+        finally:
+            self.gz.set_physics_properties(time_step=physics.time_step, max_update_rate=physics.max_update_rate,
+                                           gravity=physics.gravity, ode_config=physics.ode_config)
+
     def test_set_then_get_model_state_round_trips(self):
         self.assertTrue(self.gz.spawn_urdf('box', BOX, pose(0, 0, 1)).success)
         target = pose(1.5, -2.0, 3.25, yaw=0.7)

@@ -1,0 +1,241 @@
+#!/usr/bin/python3
+"""Navigation success rate, time to goal and whole-system real-time factor (issue 11): each robot's
+navigation bring-up (simulator, mapper, move_base), headless and unthrottled on a private roscore,
+drives to seeded random reachable goals one after the other.
+
+  bench_navigation.py [--robot m_robot|pioneer] [--goals N] [--seed S] [--rtf F | --realtime]
+
+  m_robot  find_frontier m_robot_navigation.launch (navfn + DWAPlannerROS) in the Capstone maze
+  pioneer  pioneer_2dnav pioneer_navigation.launch (navfn + TrajectoryPlannerROS) in its 8 x 8 m maze
+
+Goals are drawn from a ground-truth grid of the maze (0.05 m cells, from the walls yaml): cells at
+least `goal clearance` from every wall (room to turn at the goal) in the part of the maze the
+robot's inscribed circle can reach from its start, at least 1 m of path from the previous goal.
+The robot starts each goal where the last one left it. For each goal: move_base's outcome, the
+sim time it took against the shortest path's length at max_vel_x (the lower bound), and wall
+contact (the robot's outline from /gazebo/model_states against the walls, every 10 ms of sim time).
+The real-time factor is sim time over wall time from the first goal to the last.
+
+Output lines (one per robot):
+  navigation (<robot>): N goals, S succeeded (P %), C wall contacts, time/lower bound median M
+  (worst W), real-time factor R (sim T s in wall U s)
+"""
+import argparse
+import heapq
+import math
+import os
+import random
+import sys
+import threading
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(ROOT, 'src', 'bullet_sim_testing', 'src'))
+from bench_node_rtf import (each_robot_in_its_own_process, launch_on_private_master,  # noqa: E402
+                            rosgraph_service_up, run_with_processes, wait_until)
+from bullet_sim_testing.navigation import outline  # noqa: E402
+from bullet_sim_testing.walls import load_walls  # noqa: E402
+
+CELL = 0.05
+
+# Each robot: its bring-up, model, walls, spawn pose (the map frame starts there), outline (length,
+# width, centre ahead of the base), the planners' inscribed radius and max_vel_x, the goal clearance.
+ROBOTS = {
+    'm_robot': dict(launch=['find_frontier', 'm_robot_navigation.launch'], model='m_robot',
+                    walls=os.path.join(ROOT, 'src', 'm_robot_sim', 'config', 'capstone_map_walls.yaml'),
+                    spawn=(0.0, 0.0, 0.0), outline=(0.26, 0.22, 0.0), inscribed=0.12, max_vel=0.3,
+                    goal_clearance=0.25, xy_tolerance=0.15),
+    'pioneer': dict(launch=['pioneer_2dnav', 'pioneer_navigation.launch'], model='pioneer',
+                    walls=os.path.join(ROOT, 'src', 'pioneer_sim', 'config', 'pioneer_maze_walls.yaml'),
+                    spawn=(-3.2, -3.2, 0.0), outline=(0.44, 0.38, -0.045), inscribed=0.22, max_vel=0.5,
+                    goal_clearance=0.42, xy_tolerance=0.2),
+}
+
+
+class MazeGrid:
+    """Wall clearance of every 0.05 m cell over the maze's bounds, and shortest paths between cells."""
+
+    def __init__(self, walls, passable_clearance):
+        xs = [w.x + s * math.hypot(w.sx, w.sy) / 2 for w in walls for s in (-1, 1)]
+        ys = [w.y + s * math.hypot(w.sx, w.sy) / 2 for w in walls for s in (-1, 1)]
+        self.x0, self.y0 = min(xs), min(ys)
+        self.nx, self.ny = int((max(xs) - self.x0) / CELL) + 1, int((max(ys) - self.y0) / CELL) + 1
+        self.clearance = [min(w.distance(*self.centre(i, j)) if not w.contains(*self.centre(i, j)) else -1.0
+                              for w in walls)
+                          for j in range(self.ny) for i in range(self.nx)]
+        self.passable = [c >= passable_clearance for c in self.clearance]
+
+    def centre(self, i, j):
+        return self.x0 + (i + 0.5) * CELL, self.y0 + (j + 0.5) * CELL
+
+    def cell(self, x, y):
+        return int((x - self.x0) / CELL), int((y - self.y0) / CELL)
+
+    def distances(self, x, y):
+        """Shortest 8-connected path length (m) from (x, y) to every passable cell (inf elsewhere)."""
+        i, j = self.cell(x, y)
+        dist = [math.inf] * (self.nx * self.ny)
+        start = j * self.nx + i
+        dist[start] = 0.0
+        queue = [(0.0, start)]
+        while queue:
+            d, n = heapq.heappop(queue)
+            if d > dist[n]:
+                continue
+            ci, cj = n % self.nx, n // self.nx
+            for di in (-1, 0, 1):
+                for dj in (-1, 0, 1):
+                    ni, nj = ci + di, cj + dj
+                    if (di or dj) and 0 <= ni < self.nx and 0 <= nj < self.ny:
+                        m = nj * self.nx + ni
+                        step = CELL * (1.4142135 if di and dj else 1.0)
+                        if self.passable[m] and d + step < dist[m]:
+                            dist[m] = d + step
+                            heapq.heappush(queue, (d + step, m))
+        return dist
+
+
+class Truth:
+    """The robot's pose from /gazebo/model_states; its outline checked against the walls every 10 ms
+    of sim time, and the distance it drove."""
+
+    def __init__(self, model, walls, outline_spec):
+        import rospy
+        from gazebo_msgs.msg import ModelStates
+        self.model, self.walls = model, walls
+        length, width, centre_x = outline_spec
+        self.points = outline(length, width, centre_x=centre_x)
+        self.reach = math.hypot(abs(centre_x) + length / 2, width / 2)
+        self.lock = threading.Lock()
+        self.pose, self.last_check, self.contacts, self.driven = None, -1.0, 0, 0.0
+        self.sub = rospy.Subscriber('/gazebo/model_states', ModelStates, self.on_states, queue_size=1)
+
+    def on_states(self, msg):
+        import rospy
+        if self.model not in msg.name:
+            return
+        p = msg.pose[msg.name.index(self.model)]
+        q = p.orientation
+        yaw = math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
+        now = rospy.get_time()
+        with self.lock:
+            if self.pose:
+                self.driven += math.hypot(p.position.x - self.pose[0], p.position.y - self.pose[1])
+            self.pose = (p.position.x, p.position.y, yaw)
+            if now - self.last_check < 0.01:
+                return
+            self.last_check = now
+        c, s = math.cos(yaw), math.sin(yaw)
+        near = [w for w in self.walls if w.distance(p.position.x, p.position.y) <= self.reach or
+                w.contains(p.position.x, p.position.y)]
+        if any(w.contains(p.position.x + c * px - s * py, p.position.y + s * px + c * py)
+               for w in near for px, py in self.points):
+            with self.lock:
+                self.contacts += 1
+
+
+def set_speed(rtf):
+    """The simulator's target real-time factor (0: as fast as it goes), its time step kept."""
+    from gazebo_msgs.srv import GetPhysicsProperties, SetPhysicsProperties
+    import rospy
+    props = rospy.ServiceProxy('/gazebo/get_physics_properties', GetPhysicsProperties)()
+    rospy.ServiceProxy('/gazebo/set_physics_properties', SetPhysicsProperties)(
+        time_step=props.time_step, max_update_rate=rtf / props.time_step, gravity=props.gravity,
+        ode_config=props.ode_config)
+
+
+def bench(name, goals, seed, rtf, procs):
+    import actionlib
+    import rospy
+    from actionlib_msgs.msg import GoalStatus
+    from move_base_msgs.msg import MoveBaseAction, MoveBaseGoal
+
+    robot = ROBOTS[name]
+    walls = load_walls(robot['walls'])
+    grid = MazeGrid(walls, robot['inscribed'])
+    sx, sy, syaw = robot['spawn']
+    reachable = grid.distances(sx, sy)
+    candidates = [n for n, d in enumerate(reachable) if d < math.inf and grid.clearance[n] >= robot['goal_clearance']]
+    rng = random.Random(seed)
+
+    master = launch_on_private_master(procs, 'bench_navigation', robot['launch'], node=False)
+    master.setParam('/use_sim_time', True)  # before init_node, so that rospy's clock is the simulator's
+    rospy.init_node('bench_navigation', anonymous=True, disable_signals=True)
+    wait_until(lambda: rosgraph_service_up(master, '/gazebo/set_physics_properties'), 90, 'the simulator', procs)
+    client = actionlib.SimpleActionClient('move_base', MoveBaseAction)
+    wait_until(lambda: client.wait_for_server(rospy.Duration(1.0)), 120, 'move_base', procs)
+    truth = Truth(robot['model'], walls, robot['outline'])
+    wait_until(lambda: truth.pose is not None, 30, '/gazebo/model_states', procs)
+    if rtf != 1.0:
+        set_speed(rtf)
+
+    results = []  # (succeeded, sim seconds, lower bound seconds)
+    wall_start, sim_start = time.monotonic(), rospy.get_time()
+    contacts_start = truth.contacts
+    for k in range(goals):
+        with truth.lock:
+            x, y, _ = truth.pose
+        from_here = grid.distances(x, y)
+        far_enough = [n for n in candidates if 1.0 <= from_here[n] < math.inf]
+        n = rng.choice(far_enough or candidates)
+        gx, gy = grid.centre(n % grid.nx, n // grid.nx)
+        gyaw = rng.uniform(-math.pi, math.pi)
+        # The goal in the map frame (the spawn pose).
+        dx, dy = gx - sx, gy - sy
+        goal = MoveBaseGoal()
+        goal.target_pose.header.frame_id = 'map'
+        goal.target_pose.pose.position.x = math.cos(syaw) * dx + math.sin(syaw) * dy
+        goal.target_pose.pose.position.y = -math.sin(syaw) * dx + math.cos(syaw) * dy
+        goal.target_pose.pose.orientation.z = math.sin((gyaw - syaw) / 2)
+        goal.target_pose.pose.orientation.w = math.cos((gyaw - syaw) / 2)
+        bound = from_here[n] / robot['max_vel']
+        started = rospy.get_time()
+        client.send_goal(goal)
+        finished = client.wait_for_result(rospy.Duration(max(120.0, 10 * bound)))
+        took = rospy.get_time() - started
+        if not finished:
+            client.cancel_goal()
+            client.wait_for_result(rospy.Duration(10))
+        with truth.lock:
+            px, py, _ = truth.pose
+        error = math.hypot(px - gx, py - gy)
+        ok = finished and client.get_state() == GoalStatus.SUCCEEDED
+        results.append((ok, took, bound))
+        print('  goal %2d (%5.2f, %5.2f): %s in %5.1f s (lower bound %4.1f s), stopped %.3f m from it%s' % (
+            k + 1, gx, gy, 'reached' if ok else 'FAILED (%s)' % (client.get_goal_status_text() or 'timeout'),
+            took, bound, error, '' if error <= robot['xy_tolerance'] + 0.06 or not ok else ' (beyond tolerance)'),
+            flush=True)
+    wall = time.monotonic() - wall_start
+    sim = rospy.get_time() - sim_start
+    succeeded = sum(1 for r in results if r[0])
+    ratios = sorted(t / b for ok, t, b in results if ok and b > 0)
+    median = ratios[len(ratios) // 2] if ratios else float('nan')
+    worst = ratios[-1] if ratios else float('nan')
+    print('navigation (%s): %d goals, %d succeeded (%.0f %%), %d wall contacts, time/lower bound median %.2f '
+          '(worst %.2f), real-time factor %.2f (sim %.0f s in wall %.0f s)' % (
+              name, goals, succeeded, 100.0 * succeeded / goals, truth.contacts - contacts_start, median, worst,
+              sim / wall, sim, wall), flush=True)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
+    parser.add_argument('--robot', choices=sorted(ROBOTS), help='one robot (default: both, each in its own process)')
+    parser.add_argument('--goals', type=int, default=50, help='goals per robot (default 50)')
+    parser.add_argument('--seed', type=int, default=1, help='the goals\' random seed (default 1)')
+    parser.add_argument('--rtf', type=float, default=0.0,
+                        help='the simulator\'s target real-time factor (default 0: as fast as it goes)')
+    parser.add_argument('--realtime', action='store_true', help='the same as --rtf 1')
+    args = parser.parse_args()
+    rtf = 1.0 if args.realtime else args.rtf
+    if not args.robot:
+        extra = ['--goals', str(args.goals), '--seed', str(args.seed), '--rtf', str(rtf)]
+        return each_robot_in_its_own_process(__file__, sorted(ROBOTS), extra)
+    print('command: scripts/bench_navigation.py --robot %s --goals %d --seed %d --rtf %g' % (
+        args.robot, args.goals, args.seed, rtf), flush=True)
+    return run_with_processes('bench_navigation', lambda procs: bench(args.robot, args.goals, args.seed, rtf, procs))
+
+
+if __name__ == '__main__':
+    sys.exit(main())
