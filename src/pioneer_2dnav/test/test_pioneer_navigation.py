@@ -61,20 +61,24 @@ class PioneerNavigationTest(NavigationChecks, unittest.TestCase):
         if cls.relaying:
             cls.relay.publish(scan)
 
-    def world_goal(self, x, y, yaw):
-        return self.world_to_map(x, y, yaw)
-
     def test_1_it_reaches_goals_round_the_corners(self):
         # East along the south corridor, north through the gap, north again, then west.
-        self.reach_goals([self.world_goal(0.0, -3.2, math.pi / 2), self.world_goal(0.0, -1.6, math.pi / 2),
-                          self.world_goal(0.0, 0.0, math.pi), self.world_goal(-1.6, 0.0, math.pi)])
+        self.reach_goals([self.world_to_map(0.0, -3.2, math.pi / 2), self.world_to_map(0.0, -1.6, math.pi / 2),
+                          self.world_to_map(0.0, 0.0, math.pi), self.world_to_map(-1.6, 0.0, math.pi)])
 
     def test_2_it_stops_while_the_laser_is_silent_and_goes_on_after(self):
         # Back east and south, to the cell north of the gap.
-        x, y, yaw = self.world_goal(0.0, -1.6, -math.pi / 2)
+        x, y, yaw = self.world_to_map(0.0, -1.6, -math.pi / 2)
         self.client.send_goal(self.goal(x, y, yaw))
-        rospy.sleep(4.0)  # moving
-        moving_from = self.world_pose()
+        # Silence the laser once the robot drives (not while it turns round on the spot).
+        deadline = rospy.get_time() + 60.0
+        while True:
+            before = self.world_pose()
+            rospy.sleep(0.5)
+            after = self.world_pose()
+            if math.hypot(after[0] - before[0], after[1] - before[1]) > 0.05:
+                break
+            self.assertLess(rospy.get_time(), deadline, 'the robot did not drive off towards its goal')
         self.__class__.relaying = False
         silenced = rospy.get_time()
         rospy.sleep(1.5)  # the 0.5 s expected_update_rate runs out, the base brakes
@@ -82,8 +86,6 @@ class PioneerNavigationTest(NavigationChecks, unittest.TestCase):
         rospy.sleep(3.0)
         still_at = self.world_pose()
         self.__class__.relaying = True
-        self.assertGreater(math.hypot(stopped_at[0] - moving_from[0], stopped_at[1] - moving_from[1]), 0.05,
-                           'the robot should have been driving before the laser fell silent')
         self.assertLess(math.hypot(still_at[0] - stopped_at[0], still_at[1] - stopped_at[1]), 0.02,
                         'the robot should stand still while the laser is silent')
         said = [text for t, text in self.warnings if t >= silenced]
@@ -99,7 +101,7 @@ class PioneerNavigationTest(NavigationChecks, unittest.TestCase):
     def test_3_a_corridor_blocked_after_planning_ends_in_the_abort_after_the_recoveries(self):
         # From (0, -1.6) to the south-west cell, through the gap the box then closes.
         start = rospy.get_time()
-        x, y, yaw = self.world_goal(-1.6, -3.2, math.pi)
+        x, y, yaw = self.world_to_map(-1.6, -3.2, math.pi)
         self.client.send_goal(self.goal(x, y, yaw))
         rospy.sleep(0.5)  # planned, barely moved: the box must not land on the robot
         spawn = rospy.ServiceProxy('/gazebo/spawn_sdf_model', SpawnModel)
