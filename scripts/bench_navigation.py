@@ -35,7 +35,8 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(ROOT, 'src', 'bullet_sim_testing', 'src'))
 from bench_node_rtf import (each_robot_in_its_own_process, launch_on_private_master,  # noqa: E402
                             rosgraph_service_up, run_with_processes, wait_until)
-from bullet_sim_testing.navigation import outline  # noqa: E402
+from bullet_sim_testing.mobile import yaw_of  # noqa: E402
+from bullet_sim_testing.navigation import outline, touches_a_wall  # noqa: E402
 from bullet_sim_testing.walls import load_walls  # noqa: E402
 
 CELL = 0.05
@@ -99,7 +100,7 @@ class MazeGrid:
 
 class Truth:
     """The robot's pose from /gazebo/model_states; its outline checked against the walls every 10 ms
-    of sim time, and the distance it drove."""
+    of sim time."""
 
     def __init__(self, model, walls, outline_spec):
         import rospy
@@ -107,9 +108,8 @@ class Truth:
         self.model, self.walls = model, walls
         length, width, centre_x = outline_spec
         self.points = outline(length, width, centre_x=centre_x)
-        self.reach = math.hypot(abs(centre_x) + length / 2, width / 2)
         self.lock = threading.Lock()
-        self.pose, self.last_check, self.contacts, self.driven = None, -1.0, 0, 0.0
+        self.pose, self.last_check, self.contacts = None, -1.0, 0
         self.sub = rospy.Subscriber('/gazebo/model_states', ModelStates, self.on_states, queue_size=1)
 
     def on_states(self, msg):
@@ -117,21 +117,14 @@ class Truth:
         if self.model not in msg.name:
             return
         p = msg.pose[msg.name.index(self.model)]
-        q = p.orientation
-        yaw = math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
+        yaw = yaw_of(p.orientation)
         now = rospy.get_time()
         with self.lock:
-            if self.pose:
-                self.driven += math.hypot(p.position.x - self.pose[0], p.position.y - self.pose[1])
             self.pose = (p.position.x, p.position.y, yaw)
             if now - self.last_check < 0.01:
                 return
             self.last_check = now
-        c, s = math.cos(yaw), math.sin(yaw)
-        near = [w for w in self.walls if w.distance(p.position.x, p.position.y) <= self.reach or
-                w.contains(p.position.x, p.position.y)]
-        if any(w.contains(p.position.x + c * px - s * py, p.position.y + s * px + c * py)
-               for w in near for px, py in self.points):
+        if touches_a_wall(self.walls, self.points, p.position.x, p.position.y, yaw):
             with self.lock:
                 self.contacts += 1
 

@@ -123,25 +123,3 @@ Footprint parseFootprint(const std::string& text) {
 }
 
 }  // namespace navigation_core
-
-namespace navigation_core {
-
-std::vector<Point2> outlinePoints(const Footprint& footprint, const Pose2& pose, double step) {
-  std::vector<Point2> points;
-  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
-  for (std::size_t i = 0; i < footprint.size(); ++i) {
-    const Point2& a = footprint[i];
-    const Point2& b = footprint[(i + 1) % footprint.size()];
-    const double ax = pose.x + c * a.x - s * a.y, ay = pose.y + s * a.x + c * a.y;
-    const double bx = pose.x + c * b.x - s * b.y, by = pose.y + s * b.x + c * b.y;
-    // |dx| + |dy| bounds the edge's length: points at most `step` apart.
-    const int n = std::max(1, static_cast<int>(std::ceil((std::abs(bx - ax) + std::abs(by - ay)) / step)));
-    for (int k = 0; k <= n; ++k) {
-      const double t = static_cast<double>(k) / n;
-      points.push_back({ax + t * (bx - ax), ay + t * (by - ay)});
-    }
-  }
-  return points;
-}
-
-}  // namespace navigation_core

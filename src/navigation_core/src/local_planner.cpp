@@ -102,24 +102,16 @@ double LocalPlanner::footprintCost(const Costmap& costmap, const Footprint& foot
   // else nothing could get it out again.
   if (centre == kLethalObstacle || centre == kNoInformation) return -1.0;
   std::uint8_t highest = centre;
-  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
-  const double step = 0.5 * res;
-  for (std::size_t i = 0; i < footprint.size(); ++i) {
-    const Point2& a = footprint[i];
-    const Point2& b = footprint[(i + 1) % footprint.size()];
-    const double ax = pose.x + c * a.x - s * a.y, ay = pose.y + s * a.x + c * a.y;
-    const double bx = pose.x + c * b.x - s * b.y, by = pose.y + s * b.x + c * b.y;
-    // At most half a cell apart along the outline (|dx| + |dy| bounds the edge's length).
-    const int n = std::max(1, static_cast<int>(std::ceil((std::abs(bx - ax) + std::abs(by - ay)) / step)));
-    for (int k = 0; k <= n; ++k) {
-      const double t = static_cast<double>(k) / n;
-      const int cell = cellAt(ax + t * (bx - ax), ay + t * (by - ay));
-      if (cell < 0) return -1.0;
-      const std::uint8_t cost = costs[static_cast<std::size_t>(cell)];
-      if (cost == kLethalObstacle || cost == kNoInformation) return -1.0;
-      highest = std::max(highest, cost);
-    }
-  }
+  // At most half a cell apart along the outline.
+  const bool clear = forEachOutlinePoint(footprint, pose, 0.5 * res, [&](double x, double y) {
+    const int cell = cellAt(x, y);
+    if (cell < 0) return false;
+    const std::uint8_t cost = costs[static_cast<std::size_t>(cell)];
+    if (cost == kLethalObstacle || cost == kNoInformation) return false;
+    highest = std::max(highest, cost);
+    return true;
+  });
+  if (!clear) return -1.0;
   return highest;
 }
 

@@ -79,14 +79,15 @@ namespace navigation_core {
 
 void clearFootprint(Costmap& layer, const Footprint& footprint, const Pose2& pose) {
   if (footprint.size() < 3) return;
-  const std::vector<Point2> outline = outlinePoints(footprint, pose, 0.5 * layer.resolution());
-  double min_x = outline[0].x, max_x = min_x, min_y = outline[0].y, max_y = min_y;
-  for (const Point2& p : outline) {
+  // The outline's cells, as the local planner's footprint check walks them.
+  double min_x = pose.x, max_x = pose.x, min_y = pose.y, max_y = pose.y;
+  forEachOutlinePoint(footprint, pose, 0.5 * layer.resolution(), [&](double x, double y) {
     unsigned mx, my;
-    if (layer.worldToMap(p.x, p.y, mx, my)) layer.setCost(mx, my, kFreeSpace);
-    min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
-    min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
-  }
+    if (layer.worldToMap(x, y, mx, my)) layer.setCost(mx, my, kFreeSpace);
+    min_x = std::min(min_x, x), max_x = std::max(max_x, x);
+    min_y = std::min(min_y, y), max_y = std::max(max_y, y);
+    return true;
+  });
   // The interior: cells whose centres lie inside the polygon (even-odd rule).
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
   std::vector<Point2> polygon;

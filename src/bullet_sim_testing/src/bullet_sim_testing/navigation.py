@@ -31,6 +31,15 @@ def outline(length, width, step=0.02, centre_x=0.0):
     return [(centre_x + x, y) for x, y in points]
 
 
+def touches_a_wall(walls, points, x, y, yaw):
+    """Whether the outline `points` (robot frame) at pose (x, y, yaw) is inside any of `walls`
+    (only the walls within the outline's reach of the pose are tried)."""
+    reach = max(math.hypot(px, py) for px, py in points)
+    c, s = math.cos(yaw), math.sin(yaw)
+    near = [w for w in walls if w.contains(x, y) or w.distance(x, y) <= reach]
+    return any(w.contains(x + c * px - s * py, y + s * px + c * py) for w in near for px, py in points)
+
+
 class NavigationChecks:
     MODEL = None             # model name in the simulator
     WALLS = None             # the maze's walls yaml
@@ -78,9 +87,7 @@ class NavigationChecks:
             except (rospy.ServiceException, rospy.ROSException):
                 break
             x, y, yaw = s.pose.position.x, s.pose.position.y, yaw_of(s.pose.orientation)
-            c, si = math.cos(yaw), math.sin(yaw)
-            touching = [w for w in cls.walls for px, py in cls.points
-                        if w.contains(x + c * px - si * py, y + si * px + c * py)]
+            touching = touches_a_wall(cls.walls, cls.points, x, y, yaw)
             with cls.lock:
                 cls.truth.append((s.header.stamp.to_sec(), x, y, yaw))
                 if touching:
