@@ -275,14 +275,18 @@ def unthrottle():
 def run_with_processes(name, work):
     """work(procs) with a fresh log folder; every process it started is stopped at the end, also on
     errors, Ctrl-C and SIGTERM (e.g. from a timeout). Returns the exit status: 0, 1 on an error
-    (printed, with where the logs are kept) or 130 when interrupted."""
+    (printed, with where the logs are kept) or 130 when interrupted. The logs are deleted after a
+    success unless the environment has BENCH_KEEP_LOGS set."""
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))
     log_dir = tempfile.mkdtemp(prefix=name + '.')
     procs = Processes(log_dir)
     try:
         work(procs)
         procs.stop_all()
-        shutil.rmtree(log_dir, ignore_errors=True)  # kept only when something went wrong
+        if os.environ.get('BENCH_KEEP_LOGS'):
+            print('%s: logs kept in %s' % (name, log_dir))
+        else:
+            shutil.rmtree(log_dir, ignore_errors=True)  # kept only when something went wrong
         return 0
     except KeyboardInterrupt:
         print('%s: interrupted' % name, file=sys.stderr)

@@ -30,6 +30,21 @@ inline Eigen::Vector2d transformPoint(const Pose2D& pose, const Eigen::Vector2d&
   return {pose.x + c * point.x() - s * point.y(), pose.y + s * point.x() + c * point.y()};
 }
 
+// `b` given in the frame of `a`, expressed in the frame `a` is given in (a then b).
+inline Pose2D compose(const Pose2D& a, const Pose2D& b) {
+  const Eigen::Vector2d p = transformPoint(a, {b.x, b.y});
+  return {p.x(), p.y(), normalizeAngle(a.theta + b.theta)};
+}
+
+// `b` seen from `a` (both in one frame): the motion from a to b, so that compose(a, between(a, b)) == b.
+inline Pose2D between(const Pose2D& a, const Pose2D& b) {
+  const double c = std::cos(a.theta);
+  const double s = std::sin(a.theta);
+  const double dx = b.x - a.x;
+  const double dy = b.y - a.y;
+  return {c * dx + s * dy, -s * dx + c * dy, normalizeAngle(b.theta - a.theta)};
+}
+
 }  // namespace hector_style_mapping
 
 #endif  // HECTOR_STYLE_MAPPING_POSE_2D_H

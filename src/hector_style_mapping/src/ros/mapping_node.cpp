@@ -156,6 +156,14 @@ void MappingNode::scanCallback(const sensor_msgs::LaserScan::ConstPtr& scan) {
   Eigen::Isometry3d laser_in_base = Eigen::Isometry3d::Identity();
   if (options_.use_tf_scan_transformation && !laserInBase(*scan, &laser_in_base)) return;
 
+  // Before the timing: it may wait for the odometry's tf.
+  std::optional<geometry_msgs::TransformStamped> odometry;
+  if (options_.odom_frame != options_.base_frame) odometry = odometryAt(stamp, "map -> odom not updated");
+  std::optional<Pose2D> planar_odometry;
+  if (odometry)
+    planar_odometry = Pose2D{odometry->transform.translation.x, odometry->transform.translation.y,
+                             yawOf(odometry->transform.rotation)};
+
   const auto start = std::chrono::steady_clock::now();
   const ScanConversionReport report = scanToPoints(*scan, laser_in_base, options_.filter, &scan_points_);
   const std::string topic = scan_subscriber_.getTopic();
@@ -195,15 +203,21 @@ void MappingNode::scanCallback(const sensor_msgs::LaserScan::ConstPtr& scan) {
                         "from the last pose", options_.map_frame.c_str(), options_.base_frame.c_str(), stamp.toSec(),
                         e.what());
     }
+  } else if (options_.use_odometry_prediction && planar_odometry && last_scan_odometry_) {
+    // The motion odometry saw since the last scan, applied to the last match: the matcher then only
+    // corrects the odometry's small error, where from the last pose alone a fast turn can lose it.
+    guess = compose(slam_.pose(), between(*last_scan_odometry_, *planar_odometry));
+    guess_pointer = &guess;
   }
   slam_.update(scan_points_, guess_pointer);
+  last_scan_odometry_ = planar_odometry;
   publishPose(stamp);
   appendTrajectory(stamp);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   timing_.add(ms);
   if (options_.output_timing)
     ROS_INFO("hector_mapping: scan %ld (%d points) took %.3f ms", timing_.scans, report.used, ms);
-  publishMapTransform(stamp);  // after the timing: it may wait for the odometry's tf
+  publishMapTransform(stamp, odometry);
 }
 
 void MappingNode::publishPose(const ros::Time& stamp) {
@@ -233,7 +247,19 @@ void MappingNode::publishPose(const ros::Time& stamp) {
   }
 }
 
-void MappingNode::publishMapTransform(const ros::Time& stamp) {
+std::optional<geometry_msgs::TransformStamped> MappingNode::odometryAt(const ros::Time& stamp,
+                                                                      const char* what_for) {
+  try {
+    return tf_buffer_.lookupTransform(options_.odom_frame, options_.base_frame, stamp, kTfWait);
+  } catch (const tf2::TransformException& e) {
+    ROS_WARN_THROTTLE(5.0, "hector_mapping: no tf %s -> %s at %.3f (%s): %s", options_.odom_frame.c_str(),
+                      options_.base_frame.c_str(), stamp.toSec(), e.what(), what_for);
+    return std::nullopt;
+  }
+}
+
+void MappingNode::publishMapTransform(const ros::Time& stamp,
+                                      const std::optional<geometry_msgs::TransformStamped>& odometry) {
   if (options_.pub_map_scanmatch_transform) {
     geometry_msgs::TransformStamped scanmatch;
     scanmatch.header.stamp = stamp;
@@ -245,17 +271,9 @@ void MappingNode::publishMapTransform(const ros::Time& stamp) {
   if (!options_.pub_map_odom_transform) return;
   tf2::Transform map_to_odom = planar(slam_.pose());  // map -> base, when there is no odometry frame
   if (options_.odom_frame != options_.base_frame) {
-    geometry_msgs::TransformStamped odom_to_base_message;
-    try {
-      odom_to_base_message = tf_buffer_.lookupTransform(options_.odom_frame, options_.base_frame, stamp, kTfWait);
-    } catch (const tf2::TransformException& e) {
-      ROS_WARN_THROTTLE(5.0, "hector_mapping: no tf %s -> %s at %.3f (%s): map -> %s not updated",
-                        options_.odom_frame.c_str(), options_.base_frame.c_str(), stamp.toSec(), e.what(),
-                        options_.odom_frame.c_str());
-      return;
-    }
+    if (!odometry) return;
     tf2::Transform odom_to_base;
-    tf2::fromMsg(odom_to_base_message.transform, odom_to_base);
+    tf2::fromMsg(odometry->transform, odom_to_base);
     // The map pose is planar; the base keeps its height and tilt from odometry, so that map -> odom
     // stays planar for a level odometry frame.
     double roll, pitch, yaw;
@@ -327,6 +345,7 @@ bool MappingNode::dynamicMapService(nav_msgs::GetMap::Request&, nav_msgs::GetMap
 
 void MappingNode::reset(const std::string& why) {
   slam_.reset();
+  last_scan_odometry_.reset();
   trajectory_.poses.clear();
   have_initial_pose_ = false;
   published_map_updates_ = -1;  // the empty map goes out now

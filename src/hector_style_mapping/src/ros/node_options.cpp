@@ -92,6 +92,7 @@ void readAll(ParameterReader& r, NodeOptions* o) {
   r.read("tf_map_scanmatch_transform_frame_name", &o->tf_map_scanmatch_transform_frame_name);
   r.read("use_tf_scan_transformation", &o->use_tf_scan_transformation);
   r.read("use_tf_pose_start_estimate", &o->use_tf_pose_start_estimate);
+  r.read("use_odometry_prediction", &o->use_odometry_prediction);
   r.read("pub_map_odom_transform", &o->pub_map_odom_transform);
   r.read("pub_map_scanmatch_transform", &o->pub_map_scanmatch_transform);
   r.read("pub_odometry", &o->pub_odometry);

@@ -48,5 +48,23 @@ TEST(Pose2D, TransformPointRotatesThenTranslates) {
   EXPECT_NEAR(q.y(), 2.0, 1e-12);
 }
 
+TEST(Pose2D, BetweenIsTheMotionThatComposeAppliesAgain) {
+  // Odometry says the robot went from a to b; the mapper moves its last match m by that motion.
+  const Pose2D a{1.0, 2.0, M_PI / 2}, b{1.0, 3.0, M_PI};  // 1 m ahead, then a left quarter turn
+  const Pose2D motion = between(a, b);
+  EXPECT_NEAR(motion.x, 1.0, 1e-12);
+  EXPECT_NEAR(motion.y, 0.0, 1e-12);
+  EXPECT_NEAR(motion.theta, M_PI / 2, 1e-12);
+  const Pose2D m{-2.0, 0.5, 0.0};  // the same motion from a pose facing +x
+  const Pose2D predicted = compose(m, motion);
+  EXPECT_NEAR(predicted.x, -1.0, 1e-12);
+  EXPECT_NEAR(predicted.y, 0.5, 1e-12);
+  EXPECT_NEAR(predicted.theta, M_PI / 2, 1e-12);
+  const Pose2D back = compose(a, between(a, b));
+  EXPECT_NEAR(back.x, b.x, 1e-12);
+  EXPECT_NEAR(back.y, b.y, 1e-12);
+  EXPECT_NEAR(std::abs(angleDifference(back.theta, b.theta)), 0.0, 1e-12);
+}
+
 }  // namespace
 }  // namespace hector_style_mapping

@@ -2,6 +2,7 @@
 #define HECTOR_STYLE_MAPPING_ROS_MAPPING_NODE_H
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
@@ -54,7 +55,10 @@ class MappingNode {
   // False for a scan to drop because of its stamp (older than the last, or a duplicate).
   bool acceptStamp(const ros::Time& stamp);
   void publishPose(const ros::Time& stamp);
-  void publishMapTransform(const ros::Time& stamp);
+  // tf odom_frame -> base_frame at `stamp`; nothing (and a warning naming `what_for`) when tf cannot say.
+  std::optional<geometry_msgs::TransformStamped> odometryAt(const ros::Time& stamp, const char* what_for);
+  // map -> odom from the matched pose and the odometry at the scan (map -> base without an odometry frame).
+  void publishMapTransform(const ros::Time& stamp, const std::optional<geometry_msgs::TransformStamped>& odometry);
   void appendTrajectory(const ros::Time& stamp);
   void reset(const std::string& why);
 
@@ -74,6 +78,7 @@ class MappingNode {
   ros::Time last_scan_stamp_;
   bool have_initial_pose_ = false;
   Pose2D initial_pose_;
+  std::optional<Pose2D> last_scan_odometry_;  // odom -> base (planar) at the last matched scan
   geometry_msgs::TransformStamped map_transform_;  // the last map -> odom (or -> base) sent
   bool have_map_transform_ = false;
   nav_msgs::Path trajectory_;

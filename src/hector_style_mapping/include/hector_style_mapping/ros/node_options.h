@@ -22,6 +22,9 @@ struct NodeOptions {
   std::string tf_map_scanmatch_transform_frame_name = "scanmatcher_frame";
   bool use_tf_scan_transformation = true;   // laser pose in the base frame from tf (else: at the base origin)
   bool use_tf_pose_start_estimate = false;  // each scan's first guess from tf map_frame -> base_frame
+  // Ours, off as in upstream: with an odometry frame (odom_frame != base_frame), each scan's first
+  // guess is the last matched pose moved by the odometry's motion since the last scan.
+  bool use_odometry_prediction = false;
   bool pub_map_odom_transform = true;
   bool pub_map_scanmatch_transform = true;
   bool pub_odometry = false;                // nav_msgs/Odometry on scanmatch_odom

@@ -1,0 +1,66 @@
+"""An occupancy grid as nav_msgs/OccupancyGrid holds it, without ROS: values -1 (unknown) and
+0..100 (occupancy in %), row-major from the origin cell; the origin and resolution come from the
+message (never assumed)."""
+import math
+
+import numpy as np
+
+UNKNOWN = -1
+
+
+class Grid:
+    """values[row, col] is the cell at column col (x) and row row (y) from the origin; the origin is
+    the world pose of cell (0, 0)'s outer corner, as in nav_msgs/MapMetaData."""
+
+    def __init__(self, values, resolution, origin_x=0.0, origin_y=0.0, origin_yaw=0.0):
+        values = np.asarray(values, dtype=np.int16)
+        if values.ndim != 2:
+            raise ValueError('grid: expected a 2-D array of cell values, got shape %s' % (values.shape,))
+        if not (resolution > 0 and math.isfinite(resolution)):
+            raise ValueError('grid: resolution: expected a number > 0, got %r' % resolution)
+        self.values = values
+        self.resolution = float(resolution)
+        self.origin_x, self.origin_y, self.origin_yaw = float(origin_x), float(origin_y), float(origin_yaw)
+
+    @classmethod
+    def from_flat(cls, data, width, height, resolution, origin_x=0.0, origin_y=0.0, origin_yaw=0.0):
+        """From an OccupancyGrid's data list (width * height values, row-major)."""
+        if width * height != len(data):
+            raise ValueError('grid: data has %d values where width x height is %d x %d = %d'
+                             % (len(data), width, height, width * height))
+        return cls(np.asarray(data, dtype=np.int16).reshape(height, width), resolution, origin_x, origin_y, origin_yaw)
+
+    @property
+    def height(self):
+        return self.values.shape[0]
+
+    @property
+    def width(self):
+        return self.values.shape[1]
+
+    def unknown(self):
+        return self.values < 0
+
+    def free(self, free_threshold):
+        """Known cells with occupancy at most free_threshold (%)."""
+        return (self.values >= 0) & (self.values <= free_threshold)
+
+    def occupied(self, occupied_threshold):
+        return self.values >= occupied_threshold
+
+    def world_to_cell(self, x, y):
+        """(row, col) of the cell holding world point (x, y), or None off the grid."""
+        c, s = math.cos(self.origin_yaw), math.sin(self.origin_yaw)
+        dx, dy = x - self.origin_x, y - self.origin_y
+        col = math.floor((c * dx + s * dy) / self.resolution)
+        row = math.floor((-s * dx + c * dy) / self.resolution)
+        if 0 <= row < self.height and 0 <= col < self.width:
+            return row, col
+        return None
+
+    def cell_to_world(self, row, col):
+        """The world position of a cell's centre (row and col may be arrays)."""
+        u = (np.asarray(col, dtype=float) + 0.5) * self.resolution
+        v = (np.asarray(row, dtype=float) + 0.5) * self.resolution
+        c, s = math.cos(self.origin_yaw), math.sin(self.origin_yaw)
+        return self.origin_x + c * u - s * v, self.origin_y + s * u + c * v
