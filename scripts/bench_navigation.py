@@ -14,7 +14,8 @@ robot's inscribed circle can reach from its start, at least 1 m of path from the
 The robot starts each goal where the last one left it. A goal counts as reached when move_base
 succeeds and the true position is within xy_goal_tolerance + 0.06 m (the mapper's error). For
 each goal: the outcome, the sim time it took against the shortest path's length at max_vel_x (the
-lower bound), and wall contact (the robot's outline from /gazebo/model_states against the walls, every 10 ms of sim time).
+lower bound), and wall contact (the robot's outline from /gazebo/model_states against the walls,
+every 10 ms of sim time).
 The real-time factor is sim time over wall time from the first goal to the last.
 
 Output lines (one per robot):

@@ -55,8 +55,8 @@ class MappingNode {
   // False for a scan to drop because of its stamp (older than the last, or a duplicate).
   bool acceptStamp(const ros::Time& stamp);
   void publishPose(const ros::Time& stamp);
-  // tf odom_frame -> base_frame at `stamp`; nothing (and a warning naming `what_for`) when tf cannot say.
-  std::optional<geometry_msgs::TransformStamped> odometryAt(const ros::Time& stamp, const char* what_for);
+  // tf odom_frame -> base_frame at `stamp`; nothing (and a warning) when tf cannot say.
+  std::optional<geometry_msgs::TransformStamped> odometryAt(const ros::Time& stamp);
   // map -> odom from the matched pose and the odometry at the scan (map -> base without an odometry frame).
   void publishMapTransform(const ros::Time& stamp, const std::optional<geometry_msgs::TransformStamped>& odometry);
   void appendTrajectory(const ros::Time& stamp);
