@@ -64,3 +64,24 @@ class Grid:
         v = (np.asarray(row, dtype=float) + 0.5) * self.resolution
         c, s = math.cos(self.origin_yaw), math.sin(self.origin_yaw)
         return self.origin_x + c * u - s * v, self.origin_y + s * u + c * v
+
+    def cropped_to_known(self, margin=2):
+        """The smallest sub-grid holding every known cell plus `margin` cells round it (origin moved
+        to match), or self when nothing is known. Maps are mostly unknown at first; the searches
+        then work on the part that matters."""
+        rows, cols = np.nonzero(self.values >= 0)
+        if len(rows) == 0:
+            return self
+        r0, r1 = max(int(rows.min()) - margin, 0), min(int(rows.max()) + margin + 1, self.height)
+        c0, c1 = max(int(cols.min()) - margin, 0), min(int(cols.max()) + margin + 1, self.width)
+        if (r0, c0, r1, c1) == (0, 0, self.height, self.width):
+            return self
+        c, s = math.cos(self.origin_yaw), math.sin(self.origin_yaw)
+        u, v = c0 * self.resolution, r0 * self.resolution
+        return Grid(self.values[r0:r1, c0:c1], self.resolution, self.origin_x + c * u - s * v,
+                    self.origin_y + s * u + c * v, self.origin_yaw)
+
+
+def yaw_of_quaternion(q):
+    """The rotation about z of a quaternion with x, y, z, w (the map origin's yaw)."""
+    return math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z))

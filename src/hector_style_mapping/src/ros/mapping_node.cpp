@@ -98,8 +98,8 @@ MappingNode::MappingNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   reset_map_service_ = nh_.advertiseService("reset_map", &MappingNode::resetMapService, this);
 
   trajectory_.header.frame_id = options_.map_frame;
-  map_timer_ = nh_.createWallTimer(ros::WallDuration(options_.map_pub_period),
-                                   [this](const ros::WallTimerEvent&) { publishMap(); });
+  // Sim time, as upstream's ros::Rate: faster than real time, the map keeps up with the robot.
+  map_timer_ = nh_.createTimer(ros::Duration(options_.map_pub_period), [this](const ros::TimerEvent&) { publishMap(); });
   if (options_.pub_map_odom_transform && options_.transform_pub_period > 0.0)
     transform_timer_ = nh_.createWallTimer(ros::WallDuration(options_.transform_pub_period),
                                            [this](const ros::WallTimerEvent&) { republishMapTransform(); });

@@ -73,7 +73,8 @@ class MappingNode {
   ros::Publisher map_publisher_, map_metadata_publisher_, pose_publisher_, pose_update_publisher_;
   ros::Publisher odometry_publisher_, trajectory_publisher_;
   ros::ServiceServer dynamic_map_service_, reset_map_service_;
-  ros::WallTimer map_timer_, transform_timer_;
+  ros::Timer map_timer_;              // sim time
+  ros::WallTimer transform_timer_;    // wall time: a paused or fast simulation still gets its tf
 
   ros::Time last_scan_stamp_;
   bool have_initial_pose_ = false;

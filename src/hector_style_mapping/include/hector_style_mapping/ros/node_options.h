@@ -31,7 +31,7 @@ struct NodeOptions {
   bool advertise_map_service = true;        // dynamic_map
   bool output_timing = false;               // log each scan's processing time
   int scan_subscriber_queue_size = 5;
-  double map_pub_period = 2.0;              // s (wall) between map publications
+  double map_pub_period = 2.0;              // s (ROS time, sim time in simulation) between map publications
   double transform_pub_period = 0.05;       // s (wall) between re-publications of the map tf
   ScanFilter filter;
   MapperOptions mapper;

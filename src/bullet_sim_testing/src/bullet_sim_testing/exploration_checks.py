@@ -1,0 +1,123 @@
+"""What an exploration rostest checks, as a unittest mixin (needs the simulator, the mapper, move_base
+and an exploration node with a ~status topic).
+
+The simulation runs as fast as it goes. The exploration runs once, in setUpClass, until the node
+reports "complete" or TIMEOUT s of sim time pass; the tests then check what a user would look at:
+the completion report, how much of the maze's reachable free area the map knows (from the walls
+and the robot's footprint, bullet_sim_testing.exploration), no wall contact on the way (ground
+truth, NavigationChecks' recorder), goals only where the robot fits, and the map against the walls.
+"""
+import math
+import threading
+
+import numpy as np
+import rospy
+from gazebo_msgs.srv import GetPhysicsProperties, SetPhysicsProperties
+from move_base_msgs.msg import MoveBaseActionGoal
+from nav_msgs.msg import OccupancyGrid
+from std_msgs.msg import String
+
+from hector_style_mapping_tools.map_scoring import map_alignment
+
+from bullet_sim_testing.exploration import ReachableArea, wall_clearance
+from bullet_sim_testing.navigation import NavigationChecks
+
+
+def unthrottle():
+    """The simulator as fast as it goes (max_update_rate 0), its time step kept."""
+    props = rospy.ServiceProxy('/gazebo/get_physics_properties', GetPhysicsProperties)()
+    rospy.ServiceProxy('/gazebo/set_physics_properties', SetPhysicsProperties)(
+        time_step=props.time_step, max_update_rate=0.0, gravity=props.gravity, ode_config=props.ode_config)
+
+
+class ExplorationChecks(NavigationChecks):
+    STATUS = None            # the exploration node's ~status topic (the test node's ~status overrides it)
+    INSCRIBED = None         # m: the robot's inscribed radius (the reachable area)
+    START = (0.0, 0.0)       # where the robot starts in the world
+    TIMEOUT = 900.0          # s of sim time for the whole exploration
+    LASER_RANGE = None       # m, for the map's wall coverage
+
+    @classmethod
+    def setUpClass(cls):
+        super().setUpClass()
+        cls.STATUS = rospy.get_param('~status', cls.STATUS)
+        cls.area = ReachableArea(cls.walls, cls.INSCRIBED, cls.START)
+        cls.statuses, cls.goals, cls.maps = [], [], []
+        cls.map_lock = threading.Lock()
+        rospy.Subscriber(cls.STATUS, String, lambda m: cls.statuses.append((rospy.get_time(), m.data)), queue_size=10)
+        rospy.Subscriber('move_base/goal', MoveBaseActionGoal, lambda m: cls.goals.append(m.goal.target_pose), queue_size=10)
+        rospy.Subscriber('map', OccupancyGrid, cls._on_map, queue_size=1)
+        end = rospy.get_time() + 60
+        while not cls.maps and rospy.get_time() < end:
+            rospy.sleep(0.1)
+        cls.first_map = cls.maps[-1] if cls.maps else None
+        unthrottle()
+        cls.start_time = rospy.get_time()
+        end = cls.start_time + cls.TIMEOUT
+        while rospy.get_time() < end and not rospy.is_shutdown() and not cls.completion():
+            rospy.sleep(0.5)
+        cls.end_time = rospy.get_time()
+        rospy.sleep(3.0)  # a last map (published every 2 s)
+
+    @classmethod
+    def _on_map(cls, msg):
+        with cls.map_lock:
+            cls.maps[:] = [msg]
+
+    @classmethod
+    def completion(cls):
+        """The node's "complete: ..." report, or None."""
+        return next((text for _, text in cls.statuses if text.startswith('complete')), None)
+
+    def explored(self, msg):
+        values = np.asarray(msg.data, dtype=np.int16).reshape(msg.info.height, msg.info.width)
+        origin = (msg.info.origin.position.x, msg.info.origin.position.y)
+        return self.area.explored_fraction(values, msg.info.resolution, origin, self.MAP_IN_WORLD)
+
+    def last_map(self):
+        with self.map_lock:
+            return self.maps[-1]
+
+    # --- checks ------------------------------------------------------------------------------------
+
+    def check_exploration_completes(self):
+        report = self.completion()
+        print('%s exploration: %s after %.0f s of sim time; %d goals' % (
+            self.MODEL, report, self.end_time - self.start_time, len(self.goals)))
+        self.assertIsNotNone(report, 'no completion within %.0f s; last status: %s'
+                             % (self.TIMEOUT, self.statuses[-1][1] if self.statuses else 'none'))
+        self.assertTrue(report.startswith('complete: exploration complete: no '), report)
+
+    def check_explored_area(self, at_least):
+        before = self.explored(self.first_map)
+        after = self.explored(self.last_map())
+        print('%s exploration: %.1f %% of the %.1f m2 reachable free area known at the start, %.1f %% at the end'
+              % (self.MODEL, 100 * before, self.area.area, 100 * after))
+        self.assertLess(before, 0.9)  # the start alone does not see it all: exploring is needed
+        self.assertGreaterEqual(after, at_least)
+        self.assertLessEqual(after, 1.0)
+
+    def check_no_wall_contact(self):
+        self.assertEqual(self.contacts_since(self.start_time), [])
+
+    def check_goals_where_the_robot_fits(self, clearance):
+        self.assertGreater(len(self.goals), 0)
+        xs, ys = zip(*(self.map_to_world(g.pose.position.x, g.pose.position.y) for g in self.goals))
+        worst = float(wall_clearance(self.walls, np.array(xs), np.array(ys)).min())
+        print('%s exploration: %d goals, the nearest %.3f m from a wall' % (self.MODEL, len(self.goals), worst))
+        self.assertGreaterEqual(worst, clearance)
+        for g in self.goals:
+            self.assertTrue(math.isfinite(g.pose.position.x) and math.isfinite(g.pose.position.y))
+
+    def check_map_matches_the_walls(self, min_precision):
+        msg = self.last_map()
+        values = np.asarray(msg.data, dtype=np.int16).reshape(msg.info.height, msg.info.width)
+        rows, cols = np.nonzero(values >= 65)
+        res, ox, oy = msg.info.resolution, msg.info.origin.position.x, msg.info.origin.position.y
+        points = [self.map_to_world(ox + (c + 0.5) * res, oy + (r + 0.5) * res) for r, c in zip(rows, cols)]
+        with self.lock:
+            seen_from = [(x, y) for _, x, y, _ in self.truth[::40]]
+        precision, mean, coverage = map_alignment(self.walls, points, seen_from, self.LASER_RANGE)
+        print('%s exploration: map %d occupied cells, %.1f %% within 0.1 m of a wall (mean %.1f mm), %.1f %% of '
+              'the visible wall faces mapped' % (self.MODEL, len(points), 100 * precision, 1e3 * mean, 100 * coverage))
+        self.assertGreaterEqual(precision, min_precision)

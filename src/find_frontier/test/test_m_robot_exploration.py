@@ -1,0 +1,44 @@
+#!/usr/bin/env python3
+"""m_robot explores the Capstone maze on its own (m_robot_world.launch + nav_run.launch: the mapper,
+move_base and find_frontier; or explore.launch, explore_lite's explore in find_frontier's place, with
+the test's ~status naming /explore/status): the node reports completion, the map then knows at
+least 95 % of the maze's reachable free area, the robot never touched a wall, every goal left room for the
+robot, and the map lines up with the walls."""
+import os
+import unittest
+
+import rostest
+
+from bullet_sim_testing.exploration_checks import ExplorationChecks
+
+M_ROBOT_SIM = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'm_robot_sim')
+
+
+class MRobotExplorationTest(ExplorationChecks, unittest.TestCase):
+    MODEL = 'm_robot'
+    WALLS = os.path.join(M_ROBOT_SIM, 'config', 'capstone_map_walls.yaml')
+    OUTLINE = (0.26, 0.22)      # base 0.24 long, wheels 0.22 across; the camera's 0.02 m lip ahead
+    INSCRIBED = 0.12            # the padded footprint's (costmap_common.yaml)
+    STATUS = '/find_frontier/status'
+    LASER_RANGE = 6.0
+
+    def test_1_it_reports_completion(self):
+        self.check_exploration_completes()
+
+    def test_2_the_map_knows_the_reachable_area(self):
+        self.check_explored_area(at_least=0.95)
+
+    def test_3_no_wall_was_touched(self):
+        self.check_no_wall_contact()
+
+    def test_4_goals_leave_room_for_the_robot(self):
+        # find_frontier keeps goals the footprint's circumscribed radius (0.18 m) from the mapped
+        # walls; the map may be a cell (0.05 m) off.
+        self.check_goals_where_the_robot_fits(clearance=0.12)
+
+    def test_5_the_map_lines_up_with_the_walls(self):
+        self.check_map_matches_the_walls(min_precision=0.9)
+
+
+if __name__ == '__main__':
+    rostest.rosrun('find_frontier', 'test_m_robot_exploration', MRobotExplorationTest)

@@ -1,0 +1,185 @@
+"""The choice of exploration goal, without ROS: find_frontier and explore call plan() with each map
+(or at their planner frequency) and finished() with each goal's outcome, and act on the Decision.
+
+- A goal is sent once and kept while its frontier is still there (a frontier cell within
+  `blacklist_radius` of its middle), its goal cell still reachable, and the robot makes progress:
+  a new map alone never re-sends it (re-sending preempts move_base over and over).
+- Goals that abort, are refused, or see no progress for `progress_timeout` are blacklisted, and so
+  are goals reached while their frontier is still there (going back would not reveal it either).
+  A goal we preempt ourselves, or that someone else preempts, is not.
+- "complete" when no frontier is left, or none that is reachable and not blacklisted.
+"""
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from frontier_exploration.frontiers import FrontierOptions, find_frontiers
+from frontier_exploration.goals import Blacklist, goal_cell, middle_cell
+from frontier_exploration.reachability import reachable_cells
+
+SEND, KEEP, COMPLETE, WAIT = 'send', 'keep', 'complete', 'wait'
+SUCCEEDED, ABORTED, REJECTED, PREEMPTED, LOST = 'succeeded', 'aborted', 'rejected', 'preempted', 'lost'
+
+
+@dataclass
+class ExplorerOptions:
+    frontiers: FrontierOptions = field(default_factory=FrontierOptions)
+    min_frontier_size: float = 0.5    # m of frontier (cells x resolution); smaller ones are left out
+    clearance: float = 0.2            # m from occupied cells the robot needs (its inscribed radius or more)
+    approach_radius: float = 1.0      # m: how far from its frontier a goal may be
+    ranking: str = 'size'             # 'size': largest first (the lecture); 'cost': explore_lite's cost
+    potential_scale: float = 1e-3     # explore_lite's weights (ranking 'cost')
+    gain_scale: float = 1.0
+    progress_timeout: float = 30.0    # s without getting 5 cm nearer the goal: give it up
+    blacklist_radius: float = 0.5     # m
+
+
+@dataclass
+class Candidate:
+    """A frontier as the last plan saw it, for the node's markers."""
+    frontier: object
+    middle: tuple           # world (x, y) of its middle cell
+    goal: tuple = None      # world (x, y) of its goal cell, None when unreachable
+    path_length: float = math.inf
+    blacklisted: bool = False
+
+
+@dataclass
+class Target:
+    number: int             # counts goals sent: finished() names the goal it is about
+    middle: tuple
+    goal: tuple             # (x, y, yaw)
+    best_distance: float
+    last_progress: float
+
+
+@dataclass
+class Decision:
+    kind: str               # SEND, KEEP, COMPLETE or WAIT
+    message: str
+    goal: tuple = None      # (x, y, yaw) for SEND and KEEP
+    number: int = 0         # the goal's number, for SEND and KEEP
+    candidates: list = field(default_factory=list)
+    note: str = ''          # why the last goal was dropped, when it was
+
+
+class Explorer:
+    PROGRESS_STEP = 0.05  # m nearer the goal that counts as progress (more than the mapper's jitter)
+
+    def __init__(self, options=None):
+        self.options = options or ExplorerOptions()
+        self.blacklist = Blacklist(self.options.blacklist_radius)
+        self.target = None
+        self.goals_sent = 0
+        self.goals_reached = 0
+        self.goals_failed = 0
+        self.last_candidates = []
+
+    # --- what the node calls ------------------------------------------------------------------------
+
+    def plan(self, grid, robot_xy, now):
+        """The decision for this map and robot position at time `now` (s)."""
+        grid = grid.cropped_to_known()
+        o = self.options
+        reach = reachable_cells(grid, robot_xy, o.clearance, o.frontiers.free_threshold, o.frontiers.occupied_threshold)
+        if reach is None:
+            return Decision(WAIT, 'the robot at (%.2f, %.2f) has no known free cell with %.2f m clearance within '
+                                  'reach (off the map, boxed in, or the map has not seen round it yet)'
+                            % (robot_xy[0], robot_xy[1], o.clearance))
+        frontier_options = FrontierOptions(**{**o.frontiers.__dict__,
+                                              'min_size': max(1, math.ceil(o.min_frontier_size / grid.resolution))})
+        candidates = [Candidate(f, tuple(float(v) for v in grid.cell_to_world(*middle_cell(f))))
+                      for f in find_frontiers(grid, robot_xy, frontier_options)]
+        self.last_candidates = candidates
+        note = ''
+        if self.target is not None:
+            kept, note = self._follow_target(grid, reach, candidates, robot_xy, now)
+            if kept:
+                return Decision(KEEP, 'heading for (%.2f, %.2f)' % self.target.goal[:2], self.target.goal,
+                                self.target.number, candidates)
+        for c in candidates:
+            c.blacklisted = self.blacklist.contains(c.middle)
+            if c.blacklisted:
+                continue
+            cell = goal_cell(c.frontier, grid, reach.mask, o.approach_radius, o.frontiers.free_threshold)
+            if cell is not None:
+                c.goal = tuple(float(v) for v in grid.cell_to_world(*cell))
+                c.path_length = float(reach.distance[cell])
+        usable = [c for c in candidates if c.goal is not None and not c.blacklisted]
+        if not usable:
+            return Decision(COMPLETE, self._completion_message(candidates), candidates=candidates, note=note)
+        best = min(usable, key=lambda c: self._rank(c, grid.resolution))
+        gx, gy = best.goal
+        yaw = self._heading(robot_xy, best.goal, best.middle)
+        self.goals_sent += 1
+        distance = math.hypot(gx - robot_xy[0], gy - robot_xy[1])
+        self.target = Target(self.goals_sent, best.middle, (gx, gy, yaw), distance, now)
+        return Decision(SEND, 'goal %d: (%.2f, %.2f), for a frontier of %d cells %.1f m away'
+                        % (self.goals_sent, gx, gy, best.frontier.size, best.path_length),
+                        self.target.goal, self.goals_sent, candidates, note)
+
+    def finished(self, number, outcome):
+        """Goal `number` ended with `outcome` (SUCCEEDED, ABORTED, REJECTED, PREEMPTED or LOST).
+        Returns a message for the log, or None when the goal is no longer ours."""
+        target = self.target
+        if target is None or number != target.number:
+            return None
+        self.target = None
+        if outcome == PREEMPTED:
+            return 'goal %d was preempted (not by us): choosing again' % number
+        self.blacklist.add(target.middle)
+        if outcome == SUCCEEDED:
+            self.goals_reached += 1
+            return 'goal %d reached' % number
+        self.goals_failed += 1
+        return 'goal %d at (%.2f, %.2f) %s: its frontier is blacklisted' % (number, target.goal[0], target.goal[1], outcome)
+
+    # --- the parts --------------------------------------------------------------------------------------
+
+    def _follow_target(self, grid, reach, candidates, robot_xy, now):
+        """(keep it?, a note on why not)."""
+        t = self.target
+        cell = grid.world_to_cell(*t.goal[:2])
+        if cell is None or not reach.mask[cell]:
+            self.target = None
+            return False, 'goal %d is no longer reachable (the map has changed there)' % t.number
+        r = self.options.blacklist_radius
+        if not any(np.hypot(*(np.asarray(grid.cell_to_world(c.frontier.rows, c.frontier.cols))
+                              - np.asarray(t.middle).reshape(2, 1))).min() <= r for c in candidates):
+            self.target = None
+            return False, 'goal %d\'s frontier is explored' % t.number
+        distance = math.hypot(t.goal[0] - robot_xy[0], t.goal[1] - robot_xy[1])
+        if distance < t.best_distance - self.PROGRESS_STEP:
+            t.best_distance, t.last_progress = distance, now
+        elif now - t.last_progress > self.options.progress_timeout:
+            self.blacklist.add(t.middle)
+            self.goals_failed += 1
+            self.target = None
+            return False, ('no progress towards goal %d at (%.2f, %.2f) for %.0f s: its frontier is blacklisted'
+                           % (t.number, t.goal[0], t.goal[1], self.options.progress_timeout))
+        return True, ''
+
+    def _rank(self, c, resolution):
+        o = self.options
+        if o.ranking == 'cost':  # explore_lite's frontier cost, its units as there
+            return o.potential_scale * c.path_length * resolution - o.gain_scale * c.frontier.size * resolution
+        return (-c.frontier.size, c.path_length)
+
+    @staticmethod
+    def _heading(robot_xy, goal, middle):
+        """The goal's yaw: the way the robot drives there (no turn on arrival), or towards the
+        frontier when the goal is where the robot stands."""
+        dx, dy = goal[0] - robot_xy[0], goal[1] - robot_xy[1]
+        if math.hypot(dx, dy) < 0.1:
+            dx, dy = middle[0] - goal[0], middle[1] - goal[1]
+        return math.atan2(dy, dx)
+
+    @staticmethod
+    def _completion_message(candidates):
+        if not candidates:
+            return 'exploration complete: no frontier left'
+        blacklisted = sum(1 for c in candidates if c.blacklisted)
+        unreachable = sum(1 for c in candidates if not c.blacklisted and c.goal is None)
+        return ('exploration complete: no reachable frontier left (%d left: %d given up on, %d out of reach of the '
+                'robot through known free space)' % (len(candidates), blacklisted, unreachable))

@@ -1,0 +1,1 @@
+"""The ROS side of frontier exploration (find_frontier and explore share it)."""
