@@ -36,7 +36,7 @@ ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(ROOT, 'src', 'bullet_sim_testing', 'src'))
 from bench_node_rtf import (each_robot_in_its_own_process, launch_on_private_master,  # noqa: E402
-                            rosgraph_service_up, run_with_processes, wait_until)
+                            rosgraph_service_up, run_with_processes, set_real_time_factor, wait_until)
 from bullet_sim_testing.mobile import yaw_of  # noqa: E402
 from bullet_sim_testing.navigation import outline, touches_a_wall  # noqa: E402
 from bullet_sim_testing.walls import load_walls  # noqa: E402
@@ -136,16 +136,6 @@ class Truth:
                 self.contacts += 1
 
 
-def set_speed(rtf):
-    """The simulator's target real-time factor (0: as fast as it goes), its time step kept."""
-    from gazebo_msgs.srv import GetPhysicsProperties, SetPhysicsProperties
-    import rospy
-    props = rospy.ServiceProxy('/gazebo/get_physics_properties', GetPhysicsProperties)()
-    rospy.ServiceProxy('/gazebo/set_physics_properties', SetPhysicsProperties)(
-        time_step=props.time_step, max_update_rate=rtf / props.time_step, gravity=props.gravity,
-        ode_config=props.ode_config)
-
-
 def bench(name, goals, seed, rtf, procs, trace_file=None):
     import actionlib
     import rospy
@@ -169,7 +159,7 @@ def bench(name, goals, seed, rtf, procs, trace_file=None):
     truth = Truth(robot['model'], walls, robot['outline'])
     wait_until(lambda: truth.pose is not None, 30, '/gazebo/model_states', procs)
     if rtf != 1.0:
-        set_speed(rtf)
+        set_real_time_factor(rtf)
 
     results = []  # (succeeded, sim seconds, lower bound seconds)
     wall_start, sim_start = time.monotonic(), rospy.get_time()

@@ -263,13 +263,17 @@ def launch_on_private_master(procs, name, launch_args, node=True):
     return master
 
 
+def set_real_time_factor(rtf):
+    """The simulator's target real-time factor (0: as fast as it goes); bullet_sim_testing's."""
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'src',
+                                    'bullet_sim_testing', 'src'))
+    from bullet_sim_testing.gazebo import set_real_time_factor as set_rtf
+    set_rtf(rtf)
+
+
 def unthrottle():
     """/gazebo/set_physics_properties with max_update_rate 0 (time step and gravity kept)."""
-    import rospy
-    from gazebo_msgs.srv import GetPhysicsProperties, SetPhysicsProperties
-    props = rospy.ServiceProxy('/gazebo/get_physics_properties', GetPhysicsProperties)()
-    rospy.ServiceProxy('/gazebo/set_physics_properties', SetPhysicsProperties)(
-        time_step=props.time_step, max_update_rate=0.0, gravity=props.gravity, ode_config=props.ode_config)
+    set_real_time_factor(0.0)
 
 
 def run_with_processes(name, work):

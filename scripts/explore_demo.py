@@ -24,7 +24,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(ROOT, 'src', 'bullet_sim_testing', 'src'))
-from bench_node_rtf import launch_on_private_master, rosgraph_service_up, run_with_processes, wait_until  # noqa: E402
+from bench_node_rtf import (launch_on_private_master, rosgraph_service_up, run_with_processes,  # noqa: E402
+                            set_real_time_factor, wait_until)
 from bullet_sim_testing.exploration import ReachableArea  # noqa: E402
 from bullet_sim_testing.mobile import yaw_of  # noqa: E402
 from bullet_sim_testing.navigation import outline, touches_a_wall  # noqa: E402
@@ -107,15 +108,6 @@ class Watch:
             return next((t for t, s in self.explored if s >= share), None)
 
 
-def set_speed(rtf):
-    import rospy
-    from gazebo_msgs.srv import GetPhysicsProperties, SetPhysicsProperties
-    props = rospy.ServiceProxy('/gazebo/get_physics_properties', GetPhysicsProperties)()
-    rospy.ServiceProxy('/gazebo/set_physics_properties', SetPhysicsProperties)(
-        time_step=props.time_step, max_update_rate=rtf / props.time_step, gravity=props.gravity,
-        ode_config=props.ode_config)
-
-
 def plot_explored(path, explored, start):
     import matplotlib
     matplotlib.use('Agg')
@@ -150,7 +142,7 @@ def run(args, procs):
     status_topic = '/%s/status' % args.explorer
     watch = Watch(area, walls, (x, y, yaw), status_topic)
     wait_until(lambda: watch.status.startswith('exploring'), 120, 'the first exploration goal', procs)
-    set_speed(args.rtf)
+    set_real_time_factor(args.rtf)
     up = time.monotonic() - wall_start
     sim0, wall0 = rospy.get_time(), time.monotonic()
     print('demo: up in %.0f s; exploring %.1f m2 of reachable free area (%s)' % (

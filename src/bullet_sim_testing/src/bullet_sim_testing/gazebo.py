@@ -63,3 +63,12 @@ class Gazebo:
         while self.sim_time() < start + sim_seconds and time.monotonic() < wall_deadline:
             time.sleep(0.01)
         self.pause_physics()
+
+
+def set_real_time_factor(rtf):
+    """The simulator's target real-time factor through /gazebo/set_physics_properties (0: as fast as
+    it goes), its time step and gravity kept."""
+    props = rospy.ServiceProxy('/gazebo/get_physics_properties', GetPhysicsProperties)()
+    rospy.ServiceProxy('/gazebo/set_physics_properties', SetPhysicsProperties)(
+        time_step=props.time_step, max_update_rate=rtf / props.time_step, gravity=props.gravity,
+        ode_config=props.ode_config)

@@ -1,6 +1,8 @@
 """The choice of exploration goal, without ROS: find_frontier and explore call plan() with each map
 (or at their planner frequency) and finished() with each goal's outcome, and act on the Decision.
 
+- A goal is a reachable cell with no unknown cell within the robot's radius: the robot fits there
+  even if a wall the map has not seen yet stands just beyond the frontier.
 - A goal is sent once and kept while its frontier is still there (a frontier cell within
   `blacklist_radius` of its middle), its goal cell still reachable, and the robot makes progress:
   a new map alone never re-sends it (re-sending preempts move_base over and over).
@@ -16,7 +18,7 @@ import numpy as np
 
 from frontier_exploration.frontiers import FrontierOptions, find_frontiers
 from frontier_exploration.goals import Blacklist, goal_cell, middle_cell
-from frontier_exploration.reachability import reachable_cells
+from frontier_exploration.reachability import reachable_cells, seen_round
 
 SEND, KEEP, COMPLETE, WAIT = 'send', 'keep', 'complete', 'wait'
 SUCCEEDED, ABORTED, REJECTED, PREEMPTED, LOST = 'succeeded', 'aborted', 'rejected', 'preempted', 'lost'
@@ -98,11 +100,12 @@ class Explorer:
             if kept:
                 return Decision(KEEP, 'heading for (%.2f, %.2f)' % self.target.goal[:2], self.target.goal,
                                 self.target.number, candidates)
+        goal_cells = reach.mask & seen_round(grid, o.clearance)
         for c in candidates:
             c.blacklisted = self.blacklist.contains(c.middle)
             if c.blacklisted:
                 continue
-            cell = goal_cell(c.frontier, grid, reach.mask, o.approach_radius, o.frontiers.free_threshold)
+            cell = goal_cell(c.frontier, grid, goal_cells, o.approach_radius, o.frontiers.free_threshold)
             if cell is not None:
                 c.goal = tuple(float(v) for v in grid.cell_to_world(*cell))
                 c.path_length = float(reach.distance[cell])

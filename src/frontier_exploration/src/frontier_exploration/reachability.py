@@ -31,6 +31,14 @@ def clear_cells(grid, clearance, free_threshold, occupied_threshold):
     return free & (distance >= clearance)
 
 
+def seen_round(grid, radius):
+    """Cells with no unknown cell within `radius` (m) of their centre."""
+    unknown = grid.unknown()
+    if not unknown.any():
+        return np.ones(unknown.shape, dtype=bool)
+    return ndimage.distance_transform_edt(~unknown) * grid.resolution > radius
+
+
 def reachable_cells(grid, robot_xy, clearance, free_threshold=25, occupied_threshold=65):
     """The cells the robot reaches (see the module's doc), or None when the robot is off the grid or
     no clear cell lies within clearance + 2 cells of it (boxed in, or standing in unknown space)."""

@@ -250,3 +250,18 @@ def test_goals_face_the_way_the_robot_drives():
     first = explorer.plan(grid, (0.5, 0.5), now=0.0)
     gx, gy, yaw = first.goal
     assert yaw == pytest.approx(math.atan2(gy - 0.5, gx - 0.5))
+
+
+def test_goals_keep_the_robots_radius_from_unknown_space_and_walls():
+    # A wall may stand unseen just beyond a frontier: the robot must fit at the goal all the same.
+    explorer = Explorer(OPTIONS)
+    grid = east_and_north_openings()
+    unknown_rows, unknown_cols = np.nonzero(grid.values == U)
+    wall_rows, wall_cols = np.nonzero(grid.values == O)
+    for now in (0.0, 1.0):
+        decision = explorer.plan(grid, (0.5, 0.5), now=now)
+        assert decision.kind == SEND
+        row, col = grid.world_to_cell(*decision.goal[:2])
+        assert np.hypot(unknown_rows - row, unknown_cols - col).min() * RES > OPTIONS.clearance
+        assert np.hypot(wall_rows - row, wall_cols - col).min() * RES >= OPTIONS.clearance
+        explorer.finished(decision.number, ABORTED)
