@@ -41,7 +41,8 @@ class Watch:
     """What the demo reports, from the topics: the map's explored share, the ground-truth path and
     wall contacts, the exploration node's status and goals."""
 
-    def __init__(self, area, walls, map_in_world, status_topic):
+    def __init__(self, area, walls, map_in_world, status_topic, model='m_robot', outline_spec=OUTLINE,
+                 laser_range=LASER_RANGE):
         import numpy as np
         import rospy
         from gazebo_msgs.msg import ModelStates
@@ -49,7 +50,9 @@ class Watch:
         from nav_msgs.msg import OccupancyGrid
         from std_msgs.msg import String
         self.np, self.area, self.walls, self.map_in_world = np, area, walls, map_in_world
-        self.points = outline(*OUTLINE)
+        self.laser_range = laser_range
+        self.model = model
+        self.points = outline(outline_spec[0], outline_spec[1], centre_x=outline_spec[2] if len(outline_spec) > 2 else 0.0)
         self.lock = threading.Lock()
         self.explored = []          # (sim time, share)
         self.path = []              # (sim time, x, y) of the truth, every 0.1 s
@@ -73,9 +76,9 @@ class Watch:
 
     def on_states(self, msg):
         import rospy
-        if 'm_robot' not in msg.name:
+        if self.model not in msg.name:
             return
-        p = msg.pose[msg.name.index('m_robot')]
+        p = msg.pose[msg.name.index(self.model)]
         now = rospy.get_time()
         with self.lock:
             if self.path and now - self.path[-1][0] < 0.1:
@@ -107,6 +110,22 @@ class Watch:
         with self.lock:
             return next((t for t, s in self.explored if s >= share), None)
 
+    def map_accuracy(self, start_pose):
+        """map_alignment of the last map's occupied cells (in the world through the start pose)
+        against the walls: (share within 0.1 m of a wall, mean distance, share of visible faces)."""
+        from hector_style_mapping_tools.map_scoring import map_alignment
+        np = self.np
+        with self.lock:
+            msg, seen_from = self.last_map, [(px, py) for _, px, py in self.path[::20]]
+        values = np.asarray(msg.data, dtype=np.int16).reshape(msg.info.height, msg.info.width)
+        rows, cols = np.nonzero(values >= 65)
+        res, ox, oy = msg.info.resolution, msg.info.origin.position.x, msg.info.origin.position.y
+        x, y, yaw = start_pose
+        c, s = math.cos(yaw), math.sin(yaw)
+        mx, my = ox + (cols + 0.5) * res, oy + (rows + 0.5) * res
+        points = list(zip(x + c * mx - s * my, y + s * mx + c * my))
+        return map_alignment(self.walls, points, seen_from, self.laser_range) + (len(points),)
+
 
 def plot_explored(path, explored, start):
     import matplotlib
@@ -126,7 +145,6 @@ def plot_explored(path, explored, start):
 
 def run(args, procs):
     import rospy
-    from hector_style_mapping_tools.map_scoring import map_alignment
     x, y, yaw = args.start
     walls = load_walls(WALLS)
     area = ReachableArea(walls, INSCRIBED, (x, y))
@@ -167,17 +185,9 @@ def run(args, procs):
     subprocess.run(['rosrun', 'hector_style_mapping', 'save_map', '-f', base], check=True, env=os.environ,
                    stdout=subprocess.DEVNULL)
     with watch.lock:
-        explored, status, msg, contacts = list(watch.explored), watch.status, watch.last_map, watch.contacts
-        seen_from = [(px, py) for _, px, py in watch.path[::20]]
+        explored, status, contacts = list(watch.explored), watch.status, watch.contacts
     plot_explored(os.path.join(args.out, 'explored_area.png'), explored, sim0)
-    import numpy as np
-    values = np.asarray(msg.data, dtype=np.int16).reshape(msg.info.height, msg.info.width)
-    rows, cols = np.nonzero(values >= 65)
-    res, ox, oy = msg.info.resolution, msg.info.origin.position.x, msg.info.origin.position.y
-    c, s = math.cos(yaw), math.sin(yaw)
-    points = [(x + c * (ox + (cc + 0.5) * res) - s * (oy + (rr + 0.5) * res),
-               y + s * (ox + (cc + 0.5) * res) + c * (oy + (rr + 0.5) * res)) for rr, cc in zip(rows, cols)]
-    precision, mean, coverage = map_alignment(walls, points, seen_from, LASER_RANGE)
+    precision, mean, coverage, occupied = watch.map_accuracy((x, y, yaw))
     share = watch.share()
     t95 = watch.time_to(0.95)
     print('demo: %s' % status)
@@ -186,7 +196,7 @@ def run(args, procs):
     print('demo: %.0f s of sim time in %.0f s of wall time (%.1fx real time; %.0f s to start up); driven %.1f m; '
           '%d wall contacts' % (sim, wall, sim / wall if wall else 0, up, watch.distance(), contacts))
     print('demo: map: %.1f %% of %d occupied cells within 0.1 m of a wall (mean %.0f mm); %.1f %% of the visible '
-          'wall faces mapped' % (100 * precision, len(points), 1e3 * mean, 100 * coverage))
+          'wall faces mapped' % (100 * precision, occupied, 1e3 * mean, 100 * coverage))
     print('demo: wrote %s.pgm, %s.yaml, %s.png (the map and the path) and %s' % (
         base, base, base, os.path.join(args.out, 'explored_area.png')), flush=True)
     if not (status.startswith('complete') and share >= 0.95):

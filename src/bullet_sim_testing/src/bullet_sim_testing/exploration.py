@@ -68,3 +68,90 @@ class ReachableArea:
         known = np.zeros(len(px), dtype=bool)
         known[inside] = values[row[inside], col[inside]] >= 0
         return float(known.mean()) if len(known) else 0.0
+
+
+def visible_cells(area, walls_mask, x, y, max_range, rays=1440):
+    """Mask of the area's cells a 360-degree laser at (x, y) sees within max_range: rays cast through
+    the wall cells in steps of half a cell."""
+    step = area.resolution / 2
+    angles = np.linspace(0.0, 2 * math.pi, rays, endpoint=False)
+    distances = np.arange(step, max_range, step)
+    xs = x + np.outer(np.cos(angles), distances)
+    ys = y + np.outer(np.sin(angles), distances)
+    cols = np.floor((xs - area.x0) / area.resolution).astype(int)
+    rows = np.floor((ys - area.y0) / area.resolution).astype(int)
+    height, width = walls_mask.shape
+    inside = (rows >= 0) & (rows < height) & (cols >= 0) & (cols < width)
+    blocked = np.ones(rows.shape, dtype=bool)
+    blocked[inside] = walls_mask[rows[inside], cols[inside]]
+    # Each ray stops at its first wall (or the grid's edge).
+    open_until = np.where(blocked.any(axis=1), blocked.argmax(axis=1), len(distances))
+    seen = np.arange(len(distances))[None, :] < open_until[:, None]
+    mask = np.zeros(walls_mask.shape, dtype=bool)
+    mask[rows[seen], cols[seen]] = True
+    return mask & area.mask
+
+
+def best_tour(area, walls, start_xy, max_range, coverage=0.99, spacing=0.3):
+    """A short path from the start that sees `coverage` of the area with a 360-degree laser of
+    max_range: viewpoints chosen greedily (most unseen cells first) among the robot's reachable
+    centres every `spacing` m, visited nearest-first and shortened by 2-opt, along shortest paths
+    through the reachable centres. Returns (length m, [(x, y) of the viewpoints in order]).
+    A reference for exploration runs, not a proven optimum."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import dijkstra
+    walls_mask = wall_clearance(walls, area.xs, area.ys) <= 0
+    k = max(1, int(round(spacing / area.resolution)))
+    rows, cols = np.nonzero(area.centres)
+    keep = (rows % k == 0) & (cols % k == 0)
+    candidates = list(zip(rows[keep], cols[keep]))
+    views = [visible_cells(area, walls_mask, area.xs[r, c], area.ys[r, c], max_range) for r, c in candidates]
+    start = (int((start_xy[1] - area.y0) / area.resolution), int((start_xy[0] - area.x0) / area.resolution))
+    seen = visible_cells(area, walls_mask, start_xy[0], start_xy[1], max_range)
+    target = coverage * area.mask.sum()
+    chosen = []
+    while seen.sum() < target:
+        gains = [int((v & ~seen).sum()) for v in views]
+        best = int(np.argmax(gains))
+        if gains[best] == 0:
+            break
+        chosen.append(candidates[best])
+        seen |= views[best]
+    if not chosen:
+        return 0.0, []
+    # Shortest paths between the start and the viewpoints, through the reachable centres.
+    cr, cc = np.nonzero(area.centres)
+    index = np.full(area.centres.shape, -1)
+    index[cr, cc] = np.arange(len(cr))
+    src, dst, weight = [], [], []
+    for dr, dc, w in ((0, 1, 1.0), (1, 0, 1.0), (1, 1, math.sqrt(2)), (1, -1, math.sqrt(2))):
+        r2, c2 = cr + dr, cc + dc
+        ok = (r2 < index.shape[0]) & (c2 >= 0) & (c2 < index.shape[1])
+        a, b = index[cr[ok], cc[ok]], index[r2[ok], c2[ok]]
+        src.append(a[b >= 0])
+        dst.append(b[b >= 0])
+        weight.append(np.full(int((b >= 0).sum()), w * area.resolution))
+    graph = coo_matrix((np.concatenate(weight), (np.concatenate(src), np.concatenate(dst))),
+                       shape=(len(cr), len(cr))).tocsr()
+    nodes = [start] + chosen
+    lengths = dijkstra(graph, directed=False, indices=[int(index[n]) for n in nodes])
+    d = lengths[:, [int(index[n]) for n in nodes]]
+    order = [0]
+    left = set(range(1, len(nodes)))
+    while left:
+        nxt = min(left, key=lambda j: d[order[-1], j])
+        order.append(nxt)
+        left.remove(nxt)
+    improved = True
+    while improved:  # 2-opt on the open path (the start stays first)
+        improved = False
+        for i in range(1, len(order) - 1):
+            for j in range(i + 1, len(order)):
+                after = order[j + 1] if j + 1 < len(order) else None
+                old = d[order[i - 1], order[i]] + (d[order[j], after] if after is not None else 0.0)
+                new = d[order[i - 1], order[j]] + (d[order[i], after] if after is not None else 0.0)
+                if new < old - 1e-9:
+                    order[i:j + 1] = reversed(order[i:j + 1])
+                    improved = True
+    length = float(sum(d[a, b] for a, b in zip(order, order[1:])))
+    return length, [(float(area.xs[nodes[i]]), float(area.ys[nodes[i]])) for i in order[1:]]
