@@ -6,10 +6,12 @@
 - A goal is sent once and kept while its frontier is still there (a frontier cell within
   `blacklist_radius` of its middle), its goal cell still reachable, and the robot makes progress:
   a new map alone never re-sends it (re-sending preempts move_base over and over).
-- Goals that abort, are refused, or see no progress for `progress_timeout` are blacklisted, and so
-  are goals reached while their frontier is still there (going back would not reveal it either).
-  A goal we preempt ourselves, or that someone else preempts, is not.
-- "complete" when no frontier is left, or none that is reachable and not blacklisted.
+- Goals that abort, are refused, or see no progress along their path for `progress_timeout` are
+  blacklisted, and so are goals reached while their frontier is still there (going back would not
+  reveal it either). A goal we preempt ourselves, or that someone else preempts, is not.
+- A frontier given up on once is tried again when nothing else is left (a robot that was stuck
+  may not be any more); twice, never.
+- "complete" when no frontier is left, or none that is reachable and not given up on twice.
 """
 import math
 from dataclasses import dataclass, field
@@ -44,7 +46,8 @@ class Candidate:
     middle: tuple           # world (x, y) of its middle cell
     goal: tuple = None      # world (x, y) of its goal cell, None when unreachable
     path_length: float = math.inf
-    blacklisted: bool = False
+    blacklisted: bool = False   # given up on as often as allowed
+    strikes: int = 0            # times given up on
 
 
 @dataclass
@@ -52,7 +55,7 @@ class Target:
     number: int             # counts goals sent: finished() names the goal it is about
     middle: tuple
     goal: tuple             # (x, y, yaw)
-    best_distance: float
+    best_distance: float    # the shortest path length to the goal seen so far (m)
     last_progress: float
 
 
@@ -67,7 +70,8 @@ class Decision:
 
 
 class Explorer:
-    PROGRESS_STEP = 0.05  # m nearer the goal that counts as progress (more than the mapper's jitter)
+    PROGRESS_STEP = 0.05  # m nearer the goal along the path that counts as progress (more than the mapper's jitter)
+    MAX_STRIKES = 2       # times a frontier may be given up on before it is left for good
 
     def __init__(self, options=None):
         self.options = options or ExplorerOptions()
@@ -102,22 +106,24 @@ class Explorer:
                                 self.target.number, candidates)
         goal_cells = reach.mask & seen_round(grid, o.clearance)
         for c in candidates:
-            c.blacklisted = self.blacklist.contains(c.middle)
+            c.strikes = self.blacklist.strikes(c.middle)
+            c.blacklisted = c.strikes >= self.MAX_STRIKES
             if c.blacklisted:
                 continue
             cell = goal_cell(c.frontier, grid, goal_cells, o.approach_radius, o.frontiers.free_threshold)
             if cell is not None:
                 c.goal = tuple(float(v) for v in grid.cell_to_world(*cell))
                 c.path_length = float(reach.distance[cell])
-        usable = [c for c in candidates if c.goal is not None and not c.blacklisted]
+        reachable = [c for c in candidates if c.goal is not None and not c.blacklisted]
+        fewest = min((c.strikes for c in reachable), default=0)
+        usable = [c for c in reachable if c.strikes == fewest]  # frontiers given up on once: when nothing else is left
         if not usable:
             return Decision(COMPLETE, self._completion_message(candidates), candidates=candidates, note=note)
         best = min(usable, key=lambda c: self._rank(c, grid.resolution))
         gx, gy = best.goal
         yaw = self._heading(robot_xy, best.goal, best.middle)
         self.goals_sent += 1
-        distance = math.hypot(gx - robot_xy[0], gy - robot_xy[1])
-        self.target = Target(self.goals_sent, best.middle, (gx, gy, yaw), distance, now)
+        self.target = Target(self.goals_sent, best.middle, (gx, gy, yaw), best.path_length, now)
         return Decision(SEND, 'goal %d: (%.2f, %.2f), for a frontier of %d cells %.1f m away'
                         % (self.goals_sent, gx, gy, best.frontier.size, best.path_length),
                         self.target.goal, self.goals_sent, candidates, note)
@@ -136,7 +142,7 @@ class Explorer:
             self.goals_reached += 1
             return 'goal %d reached' % number
         self.goals_failed += 1
-        return 'goal %d at (%.2f, %.2f) %s: its frontier is blacklisted' % (number, target.goal[0], target.goal[1], outcome)
+        return 'goal %d at (%.2f, %.2f) %s: its frontier is given up on' % (number, target.goal[0], target.goal[1], outcome)
 
     # --- the parts --------------------------------------------------------------------------------------
 
@@ -152,14 +158,15 @@ class Explorer:
                               - np.asarray(t.middle).reshape(2, 1))).min() <= r for c in candidates):
             self.target = None
             return False, 'goal %d\'s frontier is explored' % t.number
-        distance = math.hypot(t.goal[0] - robot_xy[0], t.goal[1] - robot_xy[1])
+        # Along the path: on a detour round a wall the straight line grows while the robot gets nearer.
+        distance = float(reach.distance[cell])
         if distance < t.best_distance - self.PROGRESS_STEP:
             t.best_distance, t.last_progress = distance, now
         elif now - t.last_progress > self.options.progress_timeout:
             self.blacklist.add(t.middle)
             self.goals_failed += 1
             self.target = None
-            return False, ('no progress towards goal %d at (%.2f, %.2f) for %.0f s: its frontier is blacklisted'
+            return False, ('no progress towards goal %d at (%.2f, %.2f) for %.0f s: its frontier is given up on'
                            % (t.number, t.goal[0], t.goal[1], self.options.progress_timeout))
         return True, ''
 
@@ -184,5 +191,5 @@ class Explorer:
             return 'exploration complete: no frontier left'
         blacklisted = sum(1 for c in candidates if c.blacklisted)
         unreachable = sum(1 for c in candidates if not c.blacklisted and c.goal is None)
-        return ('exploration complete: no reachable frontier left (%d left: %d given up on, %d out of reach of the '
+        return ('exploration complete: no reachable frontier left (%d left: %d given up on twice, %d out of reach of the '
                 'robot through known free space)' % (len(candidates), blacklisted, unreachable))

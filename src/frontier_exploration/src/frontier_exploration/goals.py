@@ -48,19 +48,29 @@ def goal_cell(frontier, grid, reachable_mask, approach_radius, free_threshold=25
 
 
 class Blacklist:
-    """Points (world x, y) given up on. A frontier is on it when its middle is within `radius` of
-    one: frontiers shift a little as the map grows, so an exact match (explore_lite's 5-cell box
-    round the centroid) lets a dropped frontier come back, and the robot flip-flops."""
+    """Points (world x, y) given up on, with how many times. A frontier is on it when its middle is
+    within `radius` of one: frontiers shift a little as the map grows, so an exact match
+    (explore_lite's 5-cell box round the centroid) lets a dropped frontier come back, and the robot
+    flip-flops."""
 
     def __init__(self, radius):
         self.radius = radius
-        self.points = []
+        self.points = []  # [x, y, strikes]
 
     def add(self, xy):
-        self.points.append((float(xy[0]), float(xy[1])))
+        """One more strike for the point within radius of xy, or a new point with one."""
+        for p in self.points:
+            if math.hypot(xy[0] - p[0], xy[1] - p[1]) <= self.radius:
+                p[2] += 1
+                return
+        self.points.append([float(xy[0]), float(xy[1]), 1])
+
+    def strikes(self, xy):
+        """How many times the frontier at xy was given up on (the most of the points near it)."""
+        return max((p[2] for p in self.points if math.hypot(xy[0] - p[0], xy[1] - p[1]) <= self.radius), default=0)
 
     def contains(self, xy):
-        return any(math.hypot(xy[0] - x, xy[1] - y) <= self.radius for x, y in self.points)
+        return self.strikes(xy) > 0
 
     def clear(self):
         self.points = []

@@ -110,10 +110,12 @@ def test_a_frontier_behind_a_wall_gets_no_goal_on_the_near_side():
     assert goal_cell(gap, grid, reach.mask, approach_radius=2.0) is None
 
 
-def test_the_blacklist_matches_points_within_its_radius():
+def test_the_blacklist_matches_points_within_its_radius_and_counts_strikes():
     b = Blacklist(0.3)
     b.add((1.0, 1.0))
     assert b.contains((1.2, 1.2)) and not b.contains((1.3, 1.3))
+    b.add((1.1, 1.0))                      # the same frontier, shifted a little
+    assert b.strikes((1.0, 1.0)) == 2 and len(b) == 1
     b.clear()
     assert not b.contains((1.0, 1.0)) and len(b) == 0
 
@@ -151,18 +153,25 @@ def test_the_largest_frontier_is_sent_once_then_kept_not_resent():
 
 
 @pytest.mark.parametrize('outcome', [ABORTED, 'rejected', 'lost'])
-def test_a_failed_goal_is_blacklisted_and_the_next_frontier_chosen(outcome):
+def test_a_failed_goal_is_given_up_for_the_next_frontier_and_retried_once_when_none_is_left(outcome):
     explorer = Explorer(OPTIONS)
     grid = east_and_north_openings()
     first = explorer.plan(grid, (0.5, 0.5), now=0.0)
-    assert 'blacklisted' in explorer.finished(first.number, outcome)
+    assert explorer.finished(first.number, outcome).endswith('its frontier is given up on')
     second = explorer.plan(grid, (0.5, 0.5), now=1.0)
     assert second.kind == SEND and second.number == first.number + 1
     assert grid.world_to_cell(*second.goal[:2])[0] >= 37    # at the north opening
     explorer.finished(second.number, ABORTED)
-    done = explorer.plan(grid, (0.5, 0.5), now=2.0)
+    # Both given up on once: each is tried once more, the larger first, then never again.
+    third = explorer.plan(grid, (0.5, 0.5), now=2.0)
+    assert third.kind == SEND and third.goal == first.goal
+    explorer.finished(third.number, ABORTED)
+    fourth = explorer.plan(grid, (0.5, 0.5), now=3.0)
+    assert fourth.kind == SEND and fourth.goal == second.goal
+    explorer.finished(fourth.number, ABORTED)
+    done = explorer.plan(grid, (0.5, 0.5), now=4.0)
     assert done.kind == COMPLETE
-    assert done.message == ('exploration complete: no reachable frontier left (2 left: 2 given up on, '
+    assert done.message == ('exploration complete: no reachable frontier left (2 left: 2 given up on twice, '
                             '0 out of reach of the robot through known free space)')
 
 
@@ -176,7 +185,7 @@ def test_a_preempted_goal_is_not_blacklisted_and_an_old_goals_result_is_ignored(
     assert again.kind == SEND and again.goal == first.goal and len(explorer.blacklist) == 0
 
 
-def test_no_progress_for_progress_timeout_blacklists_the_goal():
+def test_no_progress_along_the_path_for_progress_timeout_gives_the_goal_up():
     explorer = Explorer(OPTIONS)
     grid = east_and_north_openings()
     first = explorer.plan(grid, (0.5, 0.5), now=0.0)
@@ -185,7 +194,7 @@ def test_no_progress_for_progress_timeout_blacklists_the_goal():
     assert explorer.plan(grid, (0.6, 0.55), now=29.5).kind == KEEP
     assert explorer.plan(grid, (0.6, 0.55), now=59.0).kind == KEEP
     after = explorer.plan(grid, (0.6, 0.55), now=60.0)
-    assert after.kind == SEND and after.number == first.number + 1
+    assert after.kind == SEND and after.number == first.number + 1 and after.goal != first.goal
     assert after.note.startswith('no progress towards goal 1 at') and after.message.startswith('goal 2: (')
     assert len(explorer.blacklist) == 1
 
@@ -265,3 +274,15 @@ def test_goals_keep_the_robots_radius_from_unknown_space_and_walls():
         assert np.hypot(unknown_rows - row, unknown_cols - col).min() * RES > OPTIONS.clearance
         assert np.hypot(wall_rows - row, wall_cols - col).min() * RES >= OPTIONS.clearance
         explorer.finished(decision.number, ABORTED)
+
+
+def test_a_detour_round_a_wall_counts_as_progress():
+    # The goal is across a wall with the opening far up: driving up, away from the goal in a straight
+    # line, gets the robot nearer along its path, which is what counts.
+    grid = two_rooms_with_an_opening(slice(30, 38))
+    options = ExplorerOptions(**{**OPTIONS.__dict__, 'progress_timeout': 10.0})
+    explorer = Explorer(options)
+    first = explorer.plan(grid, grid.cell_to_world(10, 10), now=0.0)
+    assert first.kind == SEND and grid.world_to_cell(*first.goal[:2])[1] > 20   # in room B
+    for k, row in enumerate(range(12, 34, 2)):                                     # up room A, 5 s a step
+        assert explorer.plan(grid, grid.cell_to_world(row, 10), now=5.0 * (k + 1)).kind == KEEP

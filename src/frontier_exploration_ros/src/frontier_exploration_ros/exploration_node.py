@@ -41,12 +41,12 @@ def footprint_radius(move_base_ns):
     return None
 
 
-def explorer_options(ranking, min_distance):
+def explorer_options(ranking, min_distance, frontier_clearance):
     """ExplorerOptions from the node's private parameters (explore_lite's names, and ours); the
     clearance is left None for ExplorationNode to settle once move_base is up."""
     return ExplorerOptions(
         frontiers=FrontierOptions(min_distance=float(rospy.get_param('~min_distance', min_distance)),
-                                  clearance=float(rospy.get_param('~frontier_clearance', 0.1)),
+                                  clearance=float(rospy.get_param('~frontier_clearance', frontier_clearance)),
                                   free_threshold=int(rospy.get_param('~free_threshold', 25)),
                                   occupied_threshold=int(rospy.get_param('~occupied_threshold', 65))),
         min_frontier_size=float(rospy.get_param('~min_frontier_size', 0.5)),
