@@ -44,7 +44,8 @@ class Candidate:
     """A frontier as the last plan saw it, for the node's markers."""
     frontier: object
     middle: tuple           # world (x, y) of its middle cell
-    goal: tuple = None      # world (x, y) of its goal cell, None when unreachable
+    goal: tuple = None      # world (x, y) of its goal cell, None when out of reach (or not looked for)
+    checked: bool = False   # whether its goal was looked for (not while a goal is kept)
     path_length: float = math.inf
     blacklisted: bool = False   # given up on as often as allowed
     strikes: int = 0            # times given up on
@@ -80,7 +81,6 @@ class Explorer:
         self.goals_sent = 0
         self.goals_reached = 0
         self.goals_failed = 0
-        self.last_candidates = []
 
     # --- what the node calls ------------------------------------------------------------------------
 
@@ -97,7 +97,6 @@ class Explorer:
                                               'min_size': max(1, math.ceil(o.min_frontier_size / grid.resolution))})
         candidates = [Candidate(f, tuple(float(v) for v in grid.cell_to_world(*middle_cell(f))))
                       for f in find_frontiers(grid, robot_xy, frontier_options)]
-        self.last_candidates = candidates
         note = ''
         if self.target is not None:
             kept, note = self._follow_target(grid, reach, candidates, robot_xy, now)
@@ -111,6 +110,7 @@ class Explorer:
             if c.blacklisted:
                 continue
             cell = goal_cell(c.frontier, grid, goal_cells, o.approach_radius, o.frontiers.free_threshold)
+            c.checked = True
             if cell is not None:
                 c.goal = tuple(float(v) for v in grid.cell_to_world(*cell))
                 c.path_length = float(reach.distance[cell])

@@ -99,13 +99,15 @@ class ExplorationNode:
             woken = self.wake.wait(0.02)
             self.wake.clear()
             now = rospy.get_time()
+            if now < next_plan - self.period:  # sim time went back (a world reset): plan now
+                next_plan = now
             if now < next_plan and not woken:
                 continue
             next_plan = now + self.period
             try:
                 self.step(now)
             except Exception as e:  # a bad map or a bug must not end the exploration silently
-                rospy.logerr('exploration step failed: %s: %s' % (type(e).__name__, e))
+                rospy.logerr_throttle(10.0, 'exploration step failed: %s: %s' % (type(e).__name__, e))
 
     def step(self, now):
         with self.lock:
@@ -146,7 +148,8 @@ class ExplorationNode:
             self.report(COMPLETE, decision.message)
         elif decision.kind == WAIT:
             self.report(WAIT, decision.message)
-        # KEEP: nothing to do; the goal is on its way.
+        elif self.state is None or self.state[0] != SEND:  # KEEP after a wait: exploring again
+            self.report(SEND, decision.message)
 
     def report(self, kind, message):
         """Log and publish a change of state (waiting messages at most every 10 s)."""

@@ -1,5 +1,5 @@
 """The frontiers for rviz (visualization_msgs/MarkerArray on ~frontiers), as explore_lite draws them:
-each frontier's cells as points (blue; red when given up on, grey when out of reach) and a green
+each frontier's cells as points (blue; red when given up on for good, grey when out of reach) and a green
 sphere at its goal, smaller for lower-ranked frontiers; the chosen goal's sphere is larger."""
 import rospy
 from geometry_msgs.msg import Point
@@ -22,7 +22,7 @@ def frontier_markers(candidates, grid, frame, chosen_goal, previous_count):
         cells.header.frame_id, cells.header.stamp = frame, stamp
         cells.pose.orientation.w = 1.0
         cells.scale.x = cells.scale.y = grid.resolution
-        cells.color = RED if c.blacklisted else (GREY if c.goal is None else BLUE)
+        cells.color = RED if c.blacklisted else (GREY if c.checked and c.goal is None else BLUE)
         cells.points = [Point(float(x), float(y), 0.0) for x, y in zip(xs, ys)]
         markers.append(cells)
         if c.goal is None:
