@@ -89,6 +89,7 @@ class ExplorationChecks(NavigationChecks):
         self.assertTrue(report.startswith('complete: exploration complete: no '), report)
 
     def check_explored_area(self, at_least):
+        self.assertIsNotNone(self.first_map, 'no map with anything in it on /map within 60 s of sim time')
         before = self.explored(self.first_map)
         after = self.explored(self.last_map())
         print('%s exploration: %.1f %% of the %.1f m2 reachable free area known at the start, %.1f %% at the end'
