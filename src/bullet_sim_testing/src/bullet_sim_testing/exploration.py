@@ -9,6 +9,8 @@ import math
 import numpy as np
 from scipy import ndimage
 
+from frontier_exploration.reachability import path_lengths
+
 
 def wall_clearance(walls, xs, ys):
     """Distance (m) from each point to the nearest wall's outline; negative inside a wall."""
@@ -98,8 +100,6 @@ def best_tour(area, walls, start_xy, max_range, coverage=0.99, spacing=0.3):
     centres every `spacing` m, visited nearest-first and shortened by 2-opt, along shortest paths
     through the reachable centres. Returns (length m, [(x, y) of the viewpoints in order]).
     A reference for exploration runs, not a proven optimum."""
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import dijkstra
     walls_mask = wall_clearance(walls, area.xs, area.ys) <= 0
     k = max(1, int(round(spacing / area.resolution)))
     rows, cols = np.nonzero(area.centres)
@@ -120,22 +120,9 @@ def best_tour(area, walls, start_xy, max_range, coverage=0.99, spacing=0.3):
     if not chosen:
         return 0.0, []
     # Shortest paths between the start and the viewpoints, through the reachable centres.
-    cr, cc = np.nonzero(area.centres)
-    index = np.full(area.centres.shape, -1)
-    index[cr, cc] = np.arange(len(cr))
-    src, dst, weight = [], [], []
-    for dr, dc, w in ((0, 1, 1.0), (1, 0, 1.0), (1, 1, math.sqrt(2)), (1, -1, math.sqrt(2))):
-        r2, c2 = cr + dr, cc + dc
-        ok = (r2 < index.shape[0]) & (c2 >= 0) & (c2 < index.shape[1])
-        a, b = index[cr[ok], cc[ok]], index[r2[ok], c2[ok]]
-        src.append(a[b >= 0])
-        dst.append(b[b >= 0])
-        weight.append(np.full(int((b >= 0).sum()), w * area.resolution))
-    graph = coo_matrix((np.concatenate(weight), (np.concatenate(src), np.concatenate(dst))),
-                       shape=(len(cr), len(cr))).tocsr()
     nodes = [start] + chosen
-    lengths = dijkstra(graph, directed=False, indices=[int(index[n]) for n in nodes])
-    d = lengths[:, [int(index[n]) for n in nodes]]
+    lengths = path_lengths(area.centres, nodes, area.resolution)
+    d = np.array([[lengths[i][n] for n in nodes] for i in range(len(nodes))])
     order = [0]
     left = set(range(1, len(nodes)))
     while left:

@@ -31,6 +31,9 @@ class ExplorationChecks(NavigationChecks):
     TIMEOUT = 900.0          # s of sim time for the whole exploration
     LASER_RANGE = None       # m, for the map's wall coverage
     RTF = 4.0                # the simulation's target real-time factor (2-core machines keep up)
+    GOAL_CLEARANCE = None    # m every goal keeps from the true walls
+    MIN_EXPLORED = 0.95      # of the reachable free area, at completion
+    MIN_MAP_PRECISION = 0.9  # of the map's occupied cells within 0.1 m of a wall
 
     @classmethod
     def setUpClass(cls):
@@ -77,6 +80,23 @@ class ExplorationChecks(NavigationChecks):
     def last_map(self):
         with self.map_lock:
             return self.maps[-1]
+
+    # --- the tests -----------------------------------------------------------------------------------
+
+    def test_1_it_reports_completion(self):
+        self.check_exploration_completes()
+
+    def test_2_the_map_knows_the_reachable_area(self):
+        self.check_explored_area(at_least=self.MIN_EXPLORED)
+
+    def test_3_no_wall_was_touched(self):
+        self.check_no_wall_contact()
+
+    def test_4_goals_leave_room_for_the_robot(self):
+        self.check_goals_where_the_robot_fits(clearance=self.GOAL_CLEARANCE)
+
+    def test_5_the_map_lines_up_with_the_walls(self):
+        self.check_map_matches_the_walls(min_precision=self.MIN_MAP_PRECISION)
 
     # --- checks ------------------------------------------------------------------------------------
 

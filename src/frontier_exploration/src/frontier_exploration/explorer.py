@@ -68,6 +68,7 @@ class Decision:
     number: int = 0         # the goal's number, for SEND and KEEP
     candidates: list = field(default_factory=list)
     note: str = ''          # why the last goal was dropped, when it was
+    grid: object = None     # the grid the candidates' cells index (the map cropped to its known part)
 
 
 class Explorer:
@@ -92,7 +93,7 @@ class Explorer:
         if reach is None:
             return Decision(WAIT, 'the robot at (%.2f, %.2f) has no known free cell with %.2f m clearance within '
                                   'reach (off the map, boxed in, or the map has not seen round it yet)'
-                            % (robot_xy[0], robot_xy[1], o.clearance))
+                            % (robot_xy[0], robot_xy[1], o.clearance), grid=grid)
         frontier_options = FrontierOptions(**{**o.frontiers.__dict__,
                                               'min_size': max(1, math.ceil(o.min_frontier_size / grid.resolution))})
         candidates = [Candidate(f, tuple(float(v) for v in grid.cell_to_world(*middle_cell(f))))
@@ -102,7 +103,7 @@ class Explorer:
             kept, note = self._follow_target(grid, reach, candidates, robot_xy, now)
             if kept:
                 return Decision(KEEP, 'heading for (%.2f, %.2f)' % self.target.goal[:2], self.target.goal,
-                                self.target.number, candidates)
+                                self.target.number, candidates, grid=grid)
         goal_cells = reach.mask & seen_round(grid, o.clearance)
         for c in candidates:
             c.strikes = self.blacklist.strikes(c.middle)
@@ -118,7 +119,8 @@ class Explorer:
         fewest = min((c.strikes for c in reachable), default=0)
         usable = [c for c in reachable if c.strikes == fewest]  # frontiers given up on once: when nothing else is left
         if not usable:
-            return Decision(COMPLETE, self._completion_message(candidates), candidates=candidates, note=note)
+            return Decision(COMPLETE, self._completion_message(candidates), candidates=candidates, note=note,
+                            grid=grid)
         best = min(usable, key=lambda c: self._rank(c, grid.resolution))
         gx, gy = best.goal
         yaw = self._heading(robot_xy, best.goal, best.middle)
@@ -126,7 +128,7 @@ class Explorer:
         self.target = Target(self.goals_sent, best.middle, (gx, gy, yaw), best.path_length, now)
         return Decision(SEND, 'goal %d: (%.2f, %.2f), for a frontier of %d cells %.1f m away'
                         % (self.goals_sent, gx, gy, best.frontier.size, best.path_length),
-                        self.target.goal, self.goals_sent, candidates, note)
+                        self.target.goal, self.goals_sent, candidates, note, grid)
 
     def finished(self, number, outcome):
         """Goal `number` ended with `outcome` (SUCCEEDED, ABORTED, REJECTED, PREEMPTED or LOST).

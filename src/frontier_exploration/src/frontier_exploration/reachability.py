@@ -51,7 +51,7 @@ def reachable_cells(grid, robot_xy, clearance, free_threshold=25, occupied_thres
         return None
     labels, _ = ndimage.label(clear, structure=EIGHT_CONNECTED)
     mask = labels == labels[start]
-    return Reachable(mask=mask, distance=_path_lengths(mask, start, grid.resolution), start=start)
+    return Reachable(mask=mask, distance=path_lengths(mask, [start], grid.resolution)[0], start=start)
 
 
 def _nearest_clear_cell(grid, clear, cell, radius):
@@ -72,12 +72,13 @@ def _nearest_clear_cell(grid, clear, cell, radius):
     return int(rows[k] + r0), int(cols[k] + c0)
 
 
-def _path_lengths(mask, start, resolution):
-    """Shortest 8-connected path lengths (m) from `start` through `mask`, inf outside it."""
+def path_lengths(mask, sources, resolution):
+    """Shortest 8-connected path lengths (m) through `mask` from each (row, col) of `sources`:
+    one [row, col] array per source, inf where the path cannot go."""
     rows, cols = np.nonzero(mask)
     index = np.full(mask.shape, -1, dtype=np.int64)
     index[rows, cols] = np.arange(len(rows))
-    sources, targets, weights = [], [], []
+    tails, heads, weights = [], [], []  # the graph's edges
     height, width = mask.shape
     for dr, dc, step in ((0, 1, 1.0), (1, 0, 1.0), (1, 1, math.sqrt(2)), (1, -1, math.sqrt(2))):
         r2, c2 = rows + dr, cols + dc
@@ -85,13 +86,13 @@ def _path_lengths(mask, start, resolution):
         a = index[rows[inside], cols[inside]]
         b = index[r2[inside], c2[inside]]
         linked = b >= 0
-        sources.append(a[linked])
-        targets.append(b[linked])
+        tails.append(a[linked])
+        heads.append(b[linked])
         weights.append(np.full(int(linked.sum()), step * resolution))
     n = len(rows)
-    graph = coo_matrix((np.concatenate(weights), (np.concatenate(sources), np.concatenate(targets))),
+    graph = coo_matrix((np.concatenate(weights), (np.concatenate(tails), np.concatenate(heads))),
                        shape=(n, n)).tocsr()
-    lengths = dijkstra(graph, directed=False, indices=int(index[start]))
-    distance = np.full(mask.shape, np.inf)
-    distance[rows, cols] = lengths
+    lengths = np.atleast_2d(dijkstra(graph, directed=False, indices=[int(index[s]) for s in sources]))
+    distance = np.full((len(sources),) + mask.shape, np.inf)
+    distance[:, rows, cols] = lengths
     return distance

@@ -134,8 +134,8 @@ class ExplorationNode:
         if decision.note:
             rospy.loginfo(decision.note)
         if self.marker_pub is not None:
-            markers, self.marker_count = frontier_markers(decision.candidates, grid.cropped_to_known(), frame,
-                                                          decision.goal, self.marker_count)
+            markers, self.marker_count = frontier_markers(decision.candidates, decision.grid, frame, decision.goal,
+                                                          self.marker_count)
             self.marker_pub.publish(markers)
         if decision.kind == SEND:
             self.goals.send(decision.number, decision.goal, frame)
