@@ -309,6 +309,12 @@ bool MoveBase::executeCycle() {
       oscillation_pose_ = current;
       if (recovery_trigger_ == OSCILLATION_R) recovery_index_ = 0;
     }
+    // The recoveries start over once the robot has got somewhere: oscillation_distance from where
+    // the last one ran. Upstream starts them over on any new plan or valid command, so a plan made
+    // through cells a clearing recovery has just emptied, blocked again a moment later, sends it
+    // round the first recovery for ever.
+    const double progress = oscillation_distance_ > 0 ? oscillation_distance_ : 0.5;
+    if (recovery_index_ > 0 && distance(current, recovery_pose_) >= progress) recovery_index_ = 0;
   }
 
   if (!controller_costmap_->isCurrent()) {
@@ -330,7 +336,6 @@ bool MoveBase::executeCycle() {
       return true;
     }
     lock.lock();
-    if (recovery_trigger_ == PLANNING_R) recovery_index_ = 0;
   }
 
   switch (state_) {
@@ -360,7 +365,6 @@ bool MoveBase::executeCycle() {
         last_valid_control_ = ros::Time::now();
         cmd_vel_pub_.publish(cmd);
         lock.lock();
-        if (recovery_trigger_ == CONTROLLING_R) recovery_index_ = 0;
         if (controller_->isGoalReached()) {
           lock.unlock();
           resetState();
@@ -397,6 +401,7 @@ bool MoveBase::executeCycle() {
         status.total_number_of_recoveries = static_cast<std::uint32_t>(recoveries_.size());
         status.recovery_behavior_name = behaviour.name;
         recovery_status_pub_.publish(status);
+        recovery_pose_ = current;
         lock.unlock();
         behaviour.run();
         lock.lock();

@@ -16,6 +16,28 @@ constexpr double kUnreachable = 1e9;  // cells: no way round the obstacles to th
 
 bool blocksTheGrid(std::uint8_t cost) { return cost >= kInscribedInflatedObstacle; }
 
+// Whether the free cells nearest to cell (mx, my) (itself if free, else the nearest ring of cells
+// round it that holds a free one) include one with a way to the goal.
+bool aWayOutFrom(const Costmap& costmap, const std::vector<double>& goal_distance, unsigned mx, unsigned my) {
+  const int nx = static_cast<int>(costmap.sizeX()), ny = static_cast<int>(costmap.sizeY());
+  const std::vector<std::uint8_t>& costs = costmap.costs();
+  for (int r = 0; r < std::max(nx, ny); ++r) {
+    bool any_free = false;
+    for (int y = static_cast<int>(my) - r; y <= static_cast<int>(my) + r; ++y) {
+      for (int x = static_cast<int>(mx) - r; x <= static_cast<int>(mx) + r; ++x) {
+        const bool on_ring = std::abs(x - static_cast<int>(mx)) == r || std::abs(y - static_cast<int>(my)) == r;
+        if (!on_ring || x < 0 || y < 0 || x >= nx || y >= ny) continue;
+        const std::size_t i = costmap.index(static_cast<unsigned>(x), static_cast<unsigned>(y));
+        if (blocksTheGrid(costs[i])) continue;
+        if (goal_distance[i] < kUnreachable) return true;
+        any_free = true;
+      }
+    }
+    if (any_free) return false;
+  }
+  return true;  // no free cell at all: the footprint checks decide
+}
+
 void requirePositive(double value, const char* name) {
   if (!(value > 0) || !std::isfinite(value))
     throw std::invalid_argument(std::string("local planner: ") + name + ": expected a number > 0, got " +
@@ -124,6 +146,7 @@ Trajectory LocalPlanner::simulate(const Costmap& costmap, const Footprint& footp
   const int steps = std::max(1, static_cast<int>(std::ceil(std::max(distance / options_.sim_granularity,
                                                                     angle / options_.angular_sim_granularity))));
   const double dt = options_.sim_time / steps;
+  const bool scored = path_distance_.size() == costmap.costs().size();
   Pose2 p = pose;
   double highest = 0.0;
   for (int k = 0; k < steps; ++k) {
@@ -132,11 +155,21 @@ Trajectory LocalPlanner::simulate(const Costmap& costmap, const Footprint& footp
     p.theta += command.theta * dt;
     const double cost = footprintCost(costmap, footprint, p);
     if (cost < 0) return t;  // cost stays -1: unsafe
+    unsigned cx, cy;
+    if (scored && costmap.worldToMap(p.x, p.y, cx, cy)) {
+      // As base_local_planner: a free cell with no way round the obstacles to the path or the
+      // goal makes the trajectory invalid (inscribed cells are let through: see footprintCost).
+      const unsigned i = costmap.index(cx, cy);
+      if (!blocksTheGrid(costmap.costs()[i]) && (path_distance_[i] >= kUnreachable || goal_distance_[i] >= kUnreachable)) {
+        t.cost = -2.0;
+        return t;
+      }
+    }
     highest = std::max(highest, cost);
     t.poses.push_back(p);
   }
   unsigned mx, my;
-  if (!costmap.worldToMap(p.x, p.y, mx, my) || path_distance_.size() != costmap.costs().size()) return t;
+  if (!costmap.worldToMap(p.x, p.y, mx, my) || !scored) return t;
   const unsigned end = costmap.index(mx, my);
   const double scale = options_.meter_scoring ? costmap.resolution() : 1.0;
   t.cost = options_.path_distance_bias * scale * path_distance_[end] +
@@ -151,18 +184,24 @@ bool LocalPlanner::computeVelocity(const Costmap& costmap, const Footprint& foot
     if (why) *why = reason;
     return false;
   };
-  // The path's cells (every half cell along it) and the local goal: its last point on the costmap.
+  // The path's cells (every half cell along it) and the local goal: as base_local_planner's map
+  // grid, the path as far as it first leaves the costmap, and its last cell there. (A plan that
+  // leaves the window round a wall's end and comes back in beyond the wall would otherwise put the
+  // local goal where no way inside the window leads.)
   std::vector<unsigned> path_cells;
   unsigned goal_cell = 0;
-  bool has_goal = false;
-  for (std::size_t k = 0; k < plan.size(); ++k) {
+  bool has_goal = false, left = false;
+  for (std::size_t k = 0; k < plan.size() && !left; ++k) {
     const Point2& b = plan[k];
     const Point2& a = k > 0 ? plan[k - 1] : b;
     const int n = std::max(1, static_cast<int>(std::ceil(std::hypot(b.x - a.x, b.y - a.y) / (0.5 * costmap.resolution()))));
-    for (int i = 1; i <= n; ++i) {
+    for (int i = 1; i <= n && !left; ++i) {
       const double t = static_cast<double>(i) / n;
       unsigned mx, my;
-      if (!costmap.worldToMap(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), mx, my)) continue;
+      if (!costmap.worldToMap(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), mx, my)) {
+        left = has_goal;
+        continue;
+      }
       path_cells.push_back(costmap.index(mx, my));
       goal_cell = path_cells.back();
       has_goal = true;
@@ -171,6 +210,12 @@ bool LocalPlanner::computeVelocity(const Costmap& costmap, const Footprint& foot
   if (!has_goal) return fail("the global plan does not cross the local costmap");
   distanceGrid(costmap, path_cells, path_distance_);
   distanceGrid(costmap, {goal_cell}, goal_distance_);
+  // A plan blocked after it was made (a door shut, a box dropped in a corridor) leaves no way to the
+  // local goal: fail, as base_local_planner does, so that move_base plans again and, failing that,
+  // recovers and aborts, rather than roaming on the least bad of hopeless trajectories.
+  unsigned rx, ry;
+  if (costmap.worldToMap(pose.x, pose.y, rx, ry) && !aWayOutFrom(costmap, goal_distance_, rx, ry))
+    return fail("the plan is blocked: no way round the obstacles in the local costmap to the local goal");
 
   // The dynamic window: what the accelerations reach in one control period (dwa) or in sim_time.
   const double horizon = options_.dwa ? options_.sim_period : options_.sim_time;

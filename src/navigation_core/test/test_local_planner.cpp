@@ -167,5 +167,46 @@ TEST(LocalPlanner, ItNeverDrivesIntoAWallAcrossThePath) {
   EXPECT_LT(run.max_front_x, 3.0);
 }
 
+TEST(LocalPlanner, AGoalWalledOffFromTheRobotIsAFailureWithTheReason) {
+  // As base_local_planner: no way round the obstacles to the local goal, no command at all (so that
+  // move_base plans again), not the least bad of the hopeless trajectories.
+  LocalPlanner planner{LocalPlannerOptions()};
+  Trajectory best;
+  std::string why;
+  EXPECT_FALSE(planner.computeVelocity(arena(Obstacle::kWall), kFootprint, {2.2, 2.5, 0.0}, Velocity2(),
+                                       straightPlan({2.2, 2.5}, {4.5, 2.5}), best, &why));
+  EXPECT_NE(why.find("the plan is blocked"), std::string::npos) << why;
+  // The same wall with a gap at its end: a way round, so a command.
+  Costmap gap = arena(Obstacle::kNone);
+  for (unsigned y = 0; y < 80; ++y) gap.setCost(60, y, kLethalObstacle), gap.setCost(61, y, kLethalObstacle);
+  InflationOptions inflation;
+  inflation.inflation_radius = 0.3;
+  Inflation(inflation, footprintRadii(kFootprint).inscribed, kRes).apply(gap);
+  EXPECT_TRUE(planner.computeVelocity(gap, kFootprint, {2.2, 2.5, 0.0}, Velocity2(), straightPlan({2.2, 2.5}, {4.5, 2.5}),
+                                      best, &why)) << why;
+  // Against the walled-off goal again: a trajectory over the robot's side, cut off from the goal,
+  // scores -2 (the footprint would not touch anything).
+  planner.computeVelocity(arena(Obstacle::kWall), kFootprint, {2.2, 2.5, 0.0}, Velocity2(),
+                          straightPlan({2.2, 2.5}, {4.5, 2.5}), best, &why);
+  Velocity2 ahead;
+  ahead.x = 0.3;
+  EXPECT_EQ(planner.simulate(arena(Obstacle::kWall), kFootprint, {2.2, 2.5, 0.0}, ahead).cost, -2.0);
+}
+
+TEST(LocalPlanner, APlanThatLeavesTheWindowAndComesBackBeyondAWallIsFollowedToWhereItLeaves) {
+  // North out of the 5 x 5 m window, east beyond it, back in south on the wall's far side: the
+  // local goal is where the plan first leaves (no way inside the window leads to the far side).
+  std::vector<Point2> plan = straightPlan({2.2, 2.5}, {2.2, 5.5});
+  for (const Point2& p : straightPlan({2.2, 5.5}, {3.8, 5.5})) plan.push_back(p);
+  for (const Point2& p : straightPlan({3.8, 5.5}, {3.8, 2.5})) plan.push_back(p);
+  LocalPlanner planner{LocalPlannerOptions()};
+  Trajectory best;
+  std::string why;
+  ASSERT_TRUE(planner.computeVelocity(arena(Obstacle::kWall), kFootprint, {2.2, 2.5, M_PI / 2}, Velocity2(), plan, best,
+                                      &why)) << why;
+  EXPECT_GT(best.velocity.x, 0.0);
+  EXPECT_LE(std::abs(best.velocity.theta), 0.2);
+}
+
 }  // namespace
 }  // namespace navigation_core

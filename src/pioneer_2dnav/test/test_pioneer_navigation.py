@@ -4,7 +4,12 @@ parameters, TrajectoryPlannerROS) on the map the mapper builds: it reaches goals
 corners without touching a wall; when its laser falls silent it stops, with move_base's warning,
 and goes on when the laser is back; and a corridor blocked by a box after the plan was made ends,
 after the recoveries, in upstream's abort (the maze has one way between any two cells), the robot
-stopping short of the box."""
+stopping short of the box.
+
+The box shuts the robot into the south-west corridor, all of whose walls it has seen: the
+report's costmaps take unseen cells for free, so a robot shut out of a part of the maze it has not
+seen all round may roam for minutes looking for a way through walls it has not seen, as
+upstream's does (docs/NAVIGATION.md)."""
 import math
 import os
 import threading
@@ -17,13 +22,19 @@ from gazebo_msgs.srv import DeleteModel, SpawnModel
 from geometry_msgs.msg import Pose, Twist
 from move_base_msgs.msg import RecoveryStatus
 from rosgraph_msgs.msg import Log
-from sensor_msgs.msg import LaserScan
+from topic_tools.srv import MuxSelect
 
+from bullet_sim_testing.gazebo import set_real_time_factor
 from bullet_sim_testing.navigation import NavigationChecks
 from bullet_sim_testing.walls import Wall
 
 PIONEER_SIM = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'pioneer_sim')
 STALE = 'Sensor data is out of date'
+RTF = 4.0  # the simulation's pace (the navigation benchmark runs the Pioneer at 5x)
+PLANNER_PATIENCE = 5.0  # s: move_base's default, spent before each of the four recoveries and the abort
+# move_base gives up in 38-39 s of sim time (three runs): five planner patiences and the recoveries.
+BLOCKED_TIMEOUT = 120.0
+LASER, SILENT = '/pioneer/laser/scan', '__none'  # what the test's laser mux passes on
 
 # A box closing the only opening between the maze's south-west corridor and the rest (the gap in
 # the y = -2.4 wall line west of wall_03, x from -0.725 to 0.725).
@@ -44,10 +55,10 @@ class PioneerNavigationTest(NavigationChecks, unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        cls.relaying = True
-        cls.relay = rospy.Publisher('/pioneer/laser/scan_relayed', LaserScan, queue_size=5)
         super().setUpClass()
-        rospy.Subscriber('/pioneer/laser/scan', LaserScan, cls._relay, queue_size=5)
+        set_real_time_factor(RTF)
+        rospy.wait_for_service('mux/select', timeout=60)
+        cls.select_laser = rospy.ServiceProxy('mux/select', MuxSelect)
         cls.recoveries = []
         rospy.Subscriber('move_base/recovery_status', RecoveryStatus,
                          lambda m: cls.recoveries.append((rospy.get_time(), m.recovery_behavior_name)), queue_size=10)
@@ -55,11 +66,6 @@ class PioneerNavigationTest(NavigationChecks, unittest.TestCase):
         rospy.Subscriber('/rosout', Log, lambda m: cls.warnings.append((rospy.get_time(), m.msg)), queue_size=100)
         cls.commands = []
         rospy.Subscriber('/pioneer/cmd_vel', Twist, lambda m: cls.commands.append((rospy.get_time(), m)), queue_size=50)
-
-    @classmethod
-    def _relay(cls, scan):
-        if cls.relaying:
-            cls.relay.publish(scan)
 
     def test_1_it_reaches_goals_round_the_corners(self):
         # East along the south corridor, north through the gap, north again, then west.
@@ -79,13 +85,13 @@ class PioneerNavigationTest(NavigationChecks, unittest.TestCase):
             if math.hypot(after[0] - before[0], after[1] - before[1]) > 0.05:
                 break
             self.assertLess(rospy.get_time(), deadline, 'the robot did not drive off towards its goal')
-        self.__class__.relaying = False
+        self.select_laser(SILENT)
         silenced = rospy.get_time()
         rospy.sleep(1.5)  # the 0.5 s expected_update_rate runs out, the base brakes
         stopped_at = self.world_pose()
         rospy.sleep(3.0)
         still_at = self.world_pose()
-        self.__class__.relaying = True
+        self.select_laser(LASER)
         self.assertLess(math.hypot(still_at[0] - stopped_at[0], still_at[1] - stopped_at[1]), 0.02,
                         'the robot should stand still while the laser is silent')
         said = [text for t, text in self.warnings if t >= silenced]
@@ -99,10 +105,11 @@ class PioneerNavigationTest(NavigationChecks, unittest.TestCase):
         self.assertEqual(self.contacts_since(silenced - 5.0), [])
 
     def test_3_a_corridor_blocked_after_planning_ends_in_the_abort_after_the_recoveries(self):
-        # From (0, -1.6) to the south-west cell, through the gap the box then closes.
+        # From (0, -1.6) down to the south-west corridor, then back north through the gap the box
+        # then closes.
+        self.assertEqual(self.send_and_wait(self.goal(*self.world_to_map(-1.6, -3.2, 0.0)))[0], GoalStatus.SUCCEEDED)
         start = rospy.get_time()
-        x, y, yaw = self.world_to_map(-1.6, -3.2, math.pi)
-        self.client.send_goal(self.goal(x, y, yaw))
+        self.client.send_goal(self.goal(*self.world_to_map(0.0, -1.6, math.pi / 2)))
         rospy.sleep(0.5)  # planned, barely moved: the box must not land on the robot
         spawn = rospy.ServiceProxy('/gazebo/spawn_sdf_model', SpawnModel)
         pose = Pose()
@@ -112,17 +119,20 @@ class PioneerNavigationTest(NavigationChecks, unittest.TestCase):
                               reference_frame='world').success)
         self.walls.append(BOX)  # the contact check now includes the box
         try:
-            self.assertTrue(self.client.wait_for_result(rospy.Duration(300)))
+            self.assertTrue(self.client.wait_for_result(rospy.Duration(BLOCKED_TIMEOUT)),
+                            'move_base did not give up within %.0f s' % BLOCKED_TIMEOUT)
+            self.assertGreater(rospy.get_time() - start, 5 * PLANNER_PATIENCE, 'move_base gave up too early')
             self.assertEqual(self.client.get_state(), GoalStatus.ABORTED)
             self.assertIn(self.client.get_goal_status_text(),
                           ('Failed to find a valid plan. Even after executing recovery behaviors.',
                            'Failed to find a valid control. Even after executing recovery behaviors.'))
-            # move_base's default recoveries, in their order, ran to the end before it gave up.
+            # move_base's default recoveries, in their order, once each (a plan made through the cells
+            # a clearing recovery has emptied does not start them over), then the abort.
             names = [n for t, n in self.recoveries if t >= start]
-            self.assertEqual(names[-4:], ['conservative_reset', 'rotate_recovery', 'aggressive_reset', 'rotate_recovery'])
+            self.assertEqual(names, ['conservative_reset', 'rotate_recovery', 'aggressive_reset', 'rotate_recovery'])
             self.assertEqual(self.contacts_since(start), [], 'the robot touched a wall or the box')
             px, py, _ = self.world_pose()
-            self.assertGreater(py, BOX.y + BOX.sy / 2, 'the robot should have stayed north of the box')
+            self.assertLess(py, BOX.y - BOX.sy / 2, 'the robot should have stayed south of the box')
         finally:
             rospy.ServiceProxy('/gazebo/delete_model', DeleteModel)(model_name='blocking_box')
 

@@ -78,6 +78,7 @@ class MoveBase {
   int planning_retries_ = 0;
   ros::Time last_valid_plan_, last_valid_control_, last_oscillation_reset_;
   geometry_msgs::PoseStamped oscillation_pose_;
+  geometry_msgs::PoseStamped recovery_pose_;  // where the last recovery ran
 
   std::thread planner_thread_;
   std::unique_ptr<actionlib::SimpleActionServer<move_base_msgs::MoveBaseAction>> as_;

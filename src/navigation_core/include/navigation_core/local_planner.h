@@ -1,8 +1,9 @@
 #pragma once
 // A local planner after base_local_planner's trajectory rollout and DWA: sample velocities the
 // robot can reach, simulate each for sim_time, drop those whose footprint would touch an obstacle,
-// and score the rest by how far they end from the global path and from the local goal and by the
-// costs they pass over; the cheapest is the command.
+// or pass a cell cut off from the path or the local goal, and score the rest by how far they end
+// from the global path and from the local goal and by the costs they pass over; the cheapest is the
+// command. No way to the local goal at all (the plan blocked): no command.
 //
 //   score = path_distance_bias * path distance + goal_distance_bias * goal distance
 //           + occdist_scale * highest footprint cost
@@ -43,7 +44,9 @@ struct LocalPlannerOptions {  // base_local_planner's TrajectoryPlannerROS param
 struct Trajectory {
   Velocity2 velocity;
   std::vector<Pose2> poses;
-  double cost = -1.0;  // negative: the footprint would touch an obstacle somewhere along it
+  // Negative: the footprint would touch an obstacle somewhere along it (-1), or it passes a free
+  // cell from which no way leads round the obstacles to the path or the goal (-2).
+  double cost = -1.0;
 };
 
 class LocalPlanner {
@@ -51,7 +54,8 @@ class LocalPlanner {
   explicit LocalPlanner(const LocalPlannerOptions& options);
 
   // The command for the robot at `pose` moving at `velocity`, following `plan` (world points in
-  // the costmap's frame, robot first). False, with the reason, when no sampled trajectory is safe.
+  // the costmap's frame, robot first). False, with the reason, when no sampled trajectory is safe
+  // or no way leads to the local goal.
   bool computeVelocity(const Costmap& costmap, const Footprint& footprint, const Pose2& pose,
                        const Velocity2& velocity, const std::vector<Point2>& plan, Trajectory& best,
                        std::string* why);
