@@ -66,10 +66,15 @@ double yawOf(const geometry_msgs::Quaternion& q) {
   return std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
 }
 
-// The truth at time t, linearly interpolated; false outside the samples or across a gap > 0.1 s.
+// The truth at time t: a sample at that stamp (a log's truth comes with each scan), else linearly
+// interpolated; false outside the samples or across a gap > 0.1 s.
 bool truthAt(const std::vector<StampedPose>& truth, double t, hector_style_mapping::Pose2D* out) {
   const auto after = std::lower_bound(truth.begin(), truth.end(), t,
                                       [](const StampedPose& s, double time) { return s.t < time; });
+  if (after != truth.end() && std::abs(after->t - t) < 1e-6) {
+    *out = after->pose;
+    return true;
+  }
   if (after == truth.begin() || after == truth.end()) return false;
   const StampedPose& a = *(after - 1);
   const StampedPose& b = *after;
