@@ -11,13 +11,15 @@
 //
 // The _param:=value pairs are the node's map and filter parameters (map_resolution, map_size,
 // map_start_x, map_start_y, map_multi_res_levels, update_factor_free, update_factor_occupied,
-// map_update_distance_thresh, map_update_angle_thresh, laser_min_dist, laser_max_dist,
+// map_update_distance_thresh, map_update_angle_thresh, search_window_linear, search_window_angular,
+// laser_min_dist, laser_max_dist,
 // laser_z_min_value, laser_z_max_value). Prints one line scripts/bench_mapping.py reads:
 //   bag: N scans of B beams: mean X ms, max Y ms per scan; final pose x y theta
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <string>
 #include <vector>
@@ -43,7 +45,9 @@ bool setParameter(const std::string& name, const std::string& value, MapperOptio
       {"map_resolution", &m->map_resolution}, {"map_start_x", &m->map_start_x}, {"map_start_y", &m->map_start_y},
       {"update_factor_free", &m->update_factor_free}, {"update_factor_occupied", &m->update_factor_occupied},
       {"map_update_distance_thresh", &m->map_update_distance_thresh},
-      {"map_update_angle_thresh", &m->map_update_angle_thresh}, {"laser_min_dist", &f->laser_min_dist},
+      {"map_update_angle_thresh", &m->map_update_angle_thresh},
+      {"search_window_linear", &m->search_window_linear}, {"search_window_angular", &m->search_window_angular},
+      {"laser_min_dist", &f->laser_min_dist},
       {"laser_max_dist", &f->laser_max_dist}, {"laser_z_min_value", &f->laser_z_min_value},
       {"laser_z_max_value", &f->laser_z_max_value}};
   std::map<std::string, int*> ints = {{"map_size", &m->map_size}, {"map_multi_res_levels", &m->map_multi_res_levels}};
@@ -106,6 +110,8 @@ void printAccuracy(const std::vector<StampedPose>& truth, const std::vector<Stam
     const hector_style_mapping::Pose2D expected = relative(start, at);
     last_d = std::hypot(p.pose.x - expected.x, p.pose.y - expected.y);
     last_a = std::abs(hector_style_mapping::normalizeAngle(p.pose.theta - expected.theta));
+    if (std::getenv("BENCH_TRACE"))
+      std::printf("trace %ld %.2f: %.3f m %.2f deg\n", n, p.t, last_d, (180.0 / M_PI) * last_a);
     sum_d += last_d * last_d;
     sum_a += last_a * last_a;
     max_d = std::max(max_d, last_d);
@@ -160,6 +166,7 @@ int main(int argc, char** argv) {
   hector_style_mapping::SlamProcessor slam(options);
   hector_style_mapping::ScanPoints points;
   long scans = 0, beams = 0, no_tf = 0;
+  double last_stamp = 0.0;
   double total_ms = 0.0, max_ms = 0.0;
   std::vector<StampedPose> truth, slam_poses;
   std::vector<std::string> topics = {scan_topic, "/tf", "/tf_static"};
@@ -193,7 +200,9 @@ int main(int argc, char** argv) {
     }
     const auto start = std::chrono::steady_clock::now();
     hector_style_mapping::scanToPoints(*scan, laser_in_base, filter, &points);
-    slam.update(points);
+    const double stamp = scan->header.stamp.toSec();
+    slam.update(points, nullptr, last_stamp > 0.0 && stamp > last_stamp ? stamp - last_stamp : 0.0);
+    last_stamp = stamp;
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     slam_poses.push_back({scan->header.stamp.toSec(), slam.pose()});
     ++scans;
@@ -208,6 +217,7 @@ int main(int argc, char** argv) {
   }
   std::printf("bag: %ld scans of %ld beams: mean %.3f ms, max %.3f ms per scan; final pose %.3f %.3f %.4f\n", scans,
               beams, total_ms / scans, max_ms, slam.pose().x, slam.pose().y, slam.pose().theta);
+  std::printf("search: %d of %ld scans took the correlative search's pose\n", slam.searchWinCount(), scans);
   if (!truth_topic.empty()) {
     std::sort(truth.begin(), truth.end(), [](const StampedPose& a, const StampedPose& b) { return a.t < b.t; });
     printAccuracy(truth, slam_poses);

@@ -17,6 +17,12 @@ struct MapperOptions {
   double update_factor_occupied = 0.9;      // probability a hit stands for
   double map_update_distance_thresh = 0.4;  // m the pose must move before the map is updated again
   double map_update_angle_thresh = 0.9;     // rad the pose must turn before the map is updated again
+  // Ours, not hector_mapping's: the constant-velocity prediction and the correlative search round it
+  // (see SlamProcessor::update). The search's half-widths grow with the time since the last scan
+  // and stop at these. Off (0) by default: on Radish's real logs it does not yet hold the pose
+  // (docs/MAPPING.md); e.g. 1.0 m and 0.6 rad for scans far apart.
+  double search_window_linear = 0.0;   // m
+  double search_window_angular = 0.0;  // rad
 };
 
 // The largest map_size validate() accepts: beyond it the finest level alone would need gigabytes.

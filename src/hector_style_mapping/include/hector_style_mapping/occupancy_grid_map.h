@@ -69,6 +69,10 @@ class OccupancyGridMap {
   double logOddsFreeUpdate() const { return log_odds_free_; }
   double logOddsOccupiedUpdate() const { return log_odds_occupied_; }
 
+  // What the matchers read, row-major (index = y * sizeX + x): the occupancy probability, 0 for
+  // unknown cells.
+  const std::vector<float>& matchValues() const { return match_value_; }
+
   // Every cell back to unknown.
   void clear();
 

@@ -30,13 +30,35 @@ class SlamProcessor {
   // Throws std::invalid_argument with validate()'s message if the options are not valid.
   explicit SlamProcessor(const MapperOptions& options);
 
-  // Matches the scan from the coarsest level to the finest, starting at `guess` (the last pose when null); then
-  // updates every level of the map if this is the first scan since construction / reset() or the matched pose
-  // moved more than map_update_distance_thresh or turned more than map_update_angle_thresh since the last map
-  // update. A scan without finite points changes nothing (pose, covariance and map stay; mapUpdatedByLastScan()
-  // becomes false), even when a guess is given. A guess with a non-finite field is ignored (the last pose is used).
-  // Keep the scan's points in beam order: the covariance's surface normals are fitted to neighbouring points.
-  void update(const ScanPoints& scan, const Pose2D* guess = nullptr);
+  // The fastest a robot the mapper serves plausibly moves and turns: with the time since the last
+  // scan, they size the correlative search's window (up to the options' search_window_*). Brisk
+  // walking pace and half a turn a second: more than the robots we know (a Pioneer 3-DX 1.2 m/s,
+  // a TurtleBot 0.7 m/s).
+  static constexpr double kPlausibleSpeed = 1.5;       // m/s
+  static constexpr double kPlausibleTurnRate = M_PI;   // rad/s
+
+  // Matches the scan from the coarsest level to the finest and updates every level of the map if this is the
+  // first scan since construction / reset() or the matched pose moved more than map_update_distance_thresh or
+  // turned more than map_update_angle_thresh since the last map update.
+  //
+  // The match starts at `guess` (odometry, say) if given; otherwise, with the search on (the options'
+  // search_window_linear and _angular > 0) and `seconds_since_last_scan` > 0, at the pose the last motion predicts (the last scan-to-scan motion scaled to this interval: constant velocity),
+  // and otherwise at the last pose, as hector_mapping. With the search on and the interval known, a correlative
+  // search (correlativeSearch) on the coarsest level also looks for the scan round that start, over the motion
+  // the robot could plausibly have made in that time beyond the prediction (kPlausibleSpeed, kPlausibleTurnRate,
+  // capped by search_window_linear / _angular); the search's pose, refined, replaces the start's match when it
+  // fits the finest level better. Scans far apart or a robot turning fast then no longer lose the pose.
+  //
+  // A scan without finite points changes nothing (pose, covariance and map stay; mapUpdatedByLastScan() becomes
+  // false), even when a guess is given. A guess with a non-finite field is ignored. Keep the scan's points in
+  // beam order: the covariance's surface normals are fitted to neighbouring points.
+  void update(const ScanPoints& scan, const Pose2D* guess = nullptr, double seconds_since_last_scan = 0.0);
+
+  // Whether the last update's pose came from the correlative search (it fitted better than the match from
+  // the predicted pose), for diagnostics.
+  bool lastUpdateUsedSearch() const { return last_update_used_search_; }
+  // Updates whose pose came from the search, since construction / the last reset().
+  int searchWinCount() const { return search_win_count_; }
 
   // The base frame's pose in the map frame after the last scan (the start pose before any).
   const Pose2D& pose() const { return pose_; }
@@ -68,6 +90,8 @@ class SlamProcessor {
 
  private:
   bool movedEnoughForMapUpdate() const;
+  // Gauss-Newton from `start` through every level, coarsest first; the finest level's match.
+  ScanMatchResult matchThroughLevels(const ScanPoints& scan, const Pose2D& start) const;
 
   MapperOptions options_;
   MultiResolutionMap map_;
@@ -78,6 +102,11 @@ class SlamProcessor {
   ScanMatchResult last_match_;
   bool map_updated_by_last_scan_ = false;
   int map_update_count_ = 0;
+  // The motion between the last two matched scans and the time it took (0: none yet).
+  Pose2D last_motion_;
+  double last_motion_seconds_ = 0.0;
+  bool last_update_used_search_ = false;
+  int search_win_count_ = 0;
 };
 
 }  // namespace hector_style_mapping

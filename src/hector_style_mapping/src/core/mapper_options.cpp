@@ -77,6 +77,12 @@ std::string validate(const MapperOptions& options) {
   if (!(options.map_update_angle_thresh >= 0.0 && std::isfinite(options.map_update_angle_thresh))) {
     complaints.add("map_update_angle_thresh", ">= 0 and finite", options.map_update_angle_thresh);
   }
+  if (!(options.search_window_linear >= 0.0 && std::isfinite(options.search_window_linear))) {
+    complaints.add("search_window_linear", ">= 0 and finite (m; 0 turns the search off)", options.search_window_linear);
+  }
+  if (!(options.search_window_angular >= 0.0 && options.search_window_angular <= M_PI)) {
+    complaints.add("search_window_angular", "in [0, pi] (rad; 0 turns the search off)", options.search_window_angular);
+  }
   return complaints.joined();
 }
 

@@ -5,6 +5,8 @@
 
 #include <Eigen/LU>
 
+#include "hector_style_mapping/correlative_search.h"
+
 namespace hector_style_mapping {
 
 namespace {
@@ -37,9 +39,24 @@ void SlamProcessor::reset(const Pose2D& start) {
   last_match_ = ScanMatchResult{};
   map_updated_by_last_scan_ = false;
   map_update_count_ = 0;
+  last_motion_ = Pose2D{};
+  last_motion_seconds_ = 0.0;
+  last_update_used_search_ = false;
+  search_win_count_ = 0;
 }
 
-void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess) {
+ScanMatchResult SlamProcessor::matchThroughLevels(const ScanPoints& scan, const Pose2D& start) const {
+  ScanMatchResult match;
+  match.pose = start;
+  for (int level = map_.levels() - 1; level >= 0; --level) {
+    const int iterations = level == 0 ? kFinestLevelIterations : kCoarseLevelIterations;
+    match = matcher_.matchWithDetails(map_.level(level), scan, match.pose, iterations);
+  }
+  return match;
+}
+
+void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double seconds_since_last_scan) {
+  last_update_used_search_ = false;
   if (!hasFinitePoint(scan)) {
     map_updated_by_last_scan_ = false;
     return;
@@ -47,13 +64,43 @@ void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess) {
 
   const bool guess_usable =
       guess != nullptr && std::isfinite(guess->x) && std::isfinite(guess->y) && std::isfinite(guess->theta);
-  Pose2D estimate = guess_usable ? *guess : pose_;
-  for (int level = map_.levels() - 1; level >= 0; --level) {
-    const int iterations = level == 0 ? kFinestLevelIterations : kCoarseLevelIterations;
-    last_match_ = matcher_.matchWithDetails(map_.level(level), scan, estimate, iterations);
-    estimate = last_match_.pose;
+  const bool search = options_.search_window_linear > 0.0 && options_.search_window_angular > 0.0;
+  const double dt =
+      search && std::isfinite(seconds_since_last_scan) ? std::max(seconds_since_last_scan, 0.0) : 0.0;
+  Pose2D start = pose_;
+  if (guess_usable) {
+    start = *guess;
+  } else if (dt > 0.0 && last_motion_seconds_ > 0.0) {
+    // Constant velocity, capped at twice the last interval's motion (a scan or two dropped).
+    const double f = std::min(dt / last_motion_seconds_, 2.0);
+    start = compose(pose_, Pose2D{f * last_motion_.x, f * last_motion_.y, f * last_motion_.theta});
   }
-  pose_ = estimate;
+  last_match_ = matchThroughLevels(scan, start);
+
+  const SearchWindow window{std::min(kPlausibleSpeed * dt, options_.search_window_linear),
+                            std::min(kPlausibleTurnRate * dt, options_.search_window_angular)};
+  if (map_update_count_ > 0 && window.linear > 0.0 && window.angular > 0.0) {
+    const SearchResult found = correlativeSearch(map_.level(map_.levels() - 1), scan, start, window);
+    const bool moved = found.pose.x != start.x || found.pose.y != start.y || found.pose.theta != start.theta;
+    if (moved) {  // else its refinement is the match just made
+      const ScanMatchResult refined = matchThroughLevels(scan, found.pose);
+      // Per point, and ties to the prediction's match.
+      const double residual = last_match_.squared_residual_sum / std::max(last_match_.point_count, 1);
+      const double refined_residual = refined.squared_residual_sum / std::max(refined.point_count, 1);
+      if (refined.point_count > 0 && refined_residual < 0.99 * residual) {
+        last_match_ = refined;
+        last_update_used_search_ = true;
+        ++search_win_count_;
+      }
+    }
+  }
+
+  const Pose2D previous = pose_;
+  pose_ = last_match_.pose;
+  if (dt > 0.0) {
+    last_motion_ = between(previous, pose_);
+    last_motion_seconds_ = dt;
+  }
   covariance_ = covarianceFrom(last_match_, matcher_.surfaceNormalHessian(map_.finest(), scan, pose_));
 
   map_updated_by_last_scan_ = map_update_count_ == 0 || movedEnoughForMapUpdate();

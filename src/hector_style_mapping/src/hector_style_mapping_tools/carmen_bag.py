@@ -80,7 +80,9 @@ def write_bag(log, path, scan_topic='/scan', laser_frame='laser', base_frame='ba
     shift = 1.0 - log.scans[0].stamp if log.scans[0].stamp < 1.0 else 0.0
     with rosbag.Bag(path, 'w') as bag:
         first = rospy.Time.from_sec(log.scans[0].stamp + shift)
-        bag.write('/tf_static', TFMessage([laser_mount(log, log.scans[0], first, base_frame, laser_frame)]), first)
+        # Just before the first scan, so that a reader in bag order has it for that scan.
+        before = first - rospy.Duration(0, 1000000)
+        bag.write('/tf_static', TFMessage([laser_mount(log, log.scans[0], first, base_frame, laser_frame)]), before)
         for scan in log.scans:
             stamp = rospy.Time.from_sec(scan.stamp + shift)
             limit = scan.max_range if scan.max_range is not None else max_range

@@ -152,13 +152,16 @@ bool MappingNode::laserInBase(const sensor_msgs::LaserScan& scan, Eigen::Isometr
 
 void MappingNode::scanCallback(const sensor_msgs::LaserScan::ConstPtr& scan) {
   const ros::Time stamp = scan->header.stamp;
+  const ros::Time previous_stamp = last_scan_stamp_;
   if (!acceptStamp(stamp)) return;
+  // Sizes the correlative search's window; 0 (the first scan, a clock restart) turns it off.
+  const double seconds_since_last_scan =
+      !previous_stamp.isZero() && stamp > previous_stamp ? (stamp - previous_stamp).toSec() : 0.0;
   Eigen::Isometry3d laser_in_base = Eigen::Isometry3d::Identity();
   if (options_.use_tf_scan_transformation && !laserInBase(*scan, &laser_in_base)) return;
 
   // Before the timing: it may wait for the odometry's tf. Without the prediction the lookup waits
-  // until after the match, as before it existed (looked up here, the Pioneer's blocked-corridor
-  // rostest stopped aborting in time; docs/MAPPING.md).
+  // until after the match, as before it existed.
   std::optional<geometry_msgs::TransformStamped> odometry;
   if (options_.use_odometry_prediction && options_.odom_frame != options_.base_frame)
     odometry = odometryAt(stamp);
@@ -212,7 +215,7 @@ void MappingNode::scanCallback(const sensor_msgs::LaserScan::ConstPtr& scan) {
     guess = compose(slam_.pose(), between(*last_scan_odometry_, *planar_odometry));
     guess_pointer = &guess;
   }
-  slam_.update(scan_points_, guess_pointer);
+  slam_.update(scan_points_, guess_pointer, seconds_since_last_scan);
   last_scan_odometry_ = planar_odometry;
   publishPose(stamp);
   appendTrajectory(stamp);

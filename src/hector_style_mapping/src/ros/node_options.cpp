@@ -114,6 +114,8 @@ void readAll(ParameterReader& r, NodeOptions* o) {
   r.read("update_factor_occupied", &o->mapper.update_factor_occupied);
   r.read("map_update_distance_thresh", &o->mapper.map_update_distance_thresh);
   r.read("map_update_angle_thresh", &o->mapper.map_update_angle_thresh);
+  r.read("search_window_linear", &o->mapper.search_window_linear);
+  r.read("search_window_angular", &o->mapper.search_window_angular);
 }
 
 }  // namespace

@@ -25,6 +25,8 @@ TEST(MapperOptions, DefaultsAreHectorMappingsParameterDefaults) {
   EXPECT_EQ(options.update_factor_occupied, 0.9);
   EXPECT_EQ(options.map_update_distance_thresh, 0.4);
   EXPECT_EQ(options.map_update_angle_thresh, 0.9);
+  EXPECT_EQ(options.search_window_linear, 0.0);  // ours: off, as hector_mapping has no search
+  EXPECT_EQ(options.search_window_angular, 0.0);
   EXPECT_EQ(validate(options), "");
 }
 
@@ -63,6 +65,8 @@ TEST(MapperOptions, RejectsEachBadFieldByName) {
       {"update_factor_occupied", [](MapperOptions* o) { o->update_factor_occupied = 1.0; }, "got 1"},
       {"map_update_distance_thresh", [](MapperOptions* o) { o->map_update_distance_thresh = -0.1; }, "got -0.1"},
       {"map_update_angle_thresh", [](MapperOptions* o) { o->map_update_angle_thresh = std::nan(""); }, "got nan"},
+      {"search_window_linear", [](MapperOptions* o) { o->search_window_linear = -1.0; }, "got -1"},
+      {"search_window_angular", [](MapperOptions* o) { o->search_window_angular = 4.0; }, "got 4"},
   };
   for (const BadOption& bad : cases) {
     MapperOptions options;
