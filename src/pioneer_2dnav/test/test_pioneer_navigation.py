@@ -12,7 +12,6 @@ seen all round may roam for minutes looking for a way through walls it has not s
 upstream's does (docs/NAVIGATION.md)."""
 import math
 import os
-import threading
 import unittest
 
 import rospy
