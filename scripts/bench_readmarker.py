@@ -13,7 +13,7 @@ import cv2
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, os.pardir, 'src', 'readmarker', 'test', 'unit'))
-import test_marker_crops as views  # noqa: E402
+import board_views as views  # noqa: E402
 from readmarker.crop import MarkerReader  # noqa: E402
 
 

@@ -19,7 +19,7 @@ from readmarker.crop import ncc
 from readmarker.msg import markermsg
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'unit'))
-import test_marker_crops as views  # noqa: E402
+import board_views as views  # noqa: E402
 
 
 class ReadMarkerNodeTest(unittest.TestCase):

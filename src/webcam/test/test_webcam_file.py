@@ -15,7 +15,7 @@ import rostest
 from sensor_msgs.msg import CameraInfo, Image
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'unit'))
-from test_webcam_source import LEVELS, write_video  # noqa: E402
+from clips import LEVELS, write_video  # noqa: E402
 
 RATE = 20.0
 

@@ -41,7 +41,6 @@ void SlamProcessor::reset(const Pose2D& start) {
   map_update_count_ = 0;
   last_motion_ = Pose2D{};
   last_motion_seconds_ = 0.0;
-  last_update_used_search_ = false;
   search_win_count_ = 0;
 }
 
@@ -56,7 +55,6 @@ ScanMatchResult SlamProcessor::matchThroughLevels(const ScanPoints& scan, const 
 }
 
 void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double seconds_since_last_scan) {
-  last_update_used_search_ = false;
   if (!hasFinitePoint(scan)) {
     map_updated_by_last_scan_ = false;
     return;
@@ -89,7 +87,6 @@ void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double s
       const double refined_residual = refined.squared_residual_sum / std::max(refined.point_count, 1);
       if (refined.point_count > 0 && refined_residual < 0.99 * residual) {
         last_match_ = refined;
-        last_update_used_search_ = true;
         ++search_win_count_;
       }
     }

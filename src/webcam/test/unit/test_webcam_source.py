@@ -3,19 +3,9 @@ import cv2
 import numpy as np
 import pytest
 
+from clips import LEVELS, write_video
 from webcam.camera_info import CalibrationError, load_camera_info, resolve_url, uncalibrated
 from webcam.frame_source import FrameSource, SourceError
-
-LEVELS = [0, 60, 120, 180, 240]
-
-
-def write_video(path, levels=LEVELS, size=(64, 48)):
-    writer = cv2.VideoWriter(str(path), cv2.VideoWriter_fourcc(*'MJPG'), 10, size)
-    assert writer.isOpened()
-    for level in levels:
-        writer.write(np.full((size[1], size[0], 3), level, np.uint8))
-    writer.release()
-    return str(path)
 
 
 def test_a_video_file_plays_in_order_and_loops(tmp_path):
