@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""readmarker end to end in the simulator: the marker board (its image as the texture of a 1 m
-wide panel) stands in front of m_robot at several distances and angles, and readmarker_node on the
+"""readmarker end to end in the simulator: the marker board (the package's model: boards/board.png,
+our dog and cat, as the texture of a 1 m wide panel) stands in front of m_robot at several distances and angles, and readmarker_node on the
 robot's camera (800 x 800, rgb8) gives both pictures, each matching what its markers frame on the
 board (normalised cross-correlation >= 0.9).
 
@@ -8,12 +8,13 @@ With READMARKER_PICTURE=FILE.png it also writes the camera's view at the second 
 crops (docs/images/readmarker_sim.png)."""
 import math
 import os
+import subprocess
 import sys
-import tempfile
 import unittest
 
 import cv2
 import numpy as np
+import rospkg
 import rospy
 import rostest
 from gazebo_msgs.srv import DeleteModel, SpawnModel
@@ -21,34 +22,32 @@ from geometry_msgs.msg import Pose
 
 from readmarker.crop import ncc
 from readmarker.msg import markermsg
+from readmarker.pictures import pets_board
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'unit'))
 import board_views as views  # noqa: E402
 
 WIDTH = 1.0  # m, the panel
+PACKAGE = rospkg.RosPack().get_path('readmarker')
+_, FRAMED = pets_board()  # the regions the markers frame on boards/board.png
 # (x, y, yaw) of the panel in the world; m_robot sits at the origin looking along +x. The panel's
 # printed face looks along its -x, so yaw pi faces the robot.
 POSES = [(1.0, 0.0, math.pi), (0.8, 0.15, math.pi - 0.35), (1.3, -0.2, math.pi + 0.5)]
 
 
-def board_urdf(texture, width, height):
-    return """<robot name="marker_board"><link name="board">
-  <inertial><mass value="50"/><inertia ixx="5" iyy="5" izz="5" ixy="0" ixz="0" iyz="0"/></inertial>
-  <visual><origin xyz="0 0 {z}"/><geometry><box size="0.02 {w} {h}"/></geometry>
-    <material name="board"><texture filename="{texture}"/></material></visual>
-  <collision><origin xyz="0 0 {z}"/><geometry><box size="0.3 {w} {h}"/></geometry></collision>
-</link></robot>""".format(z=height / 2 + 0.2, w=width, h=height, texture=texture)
+def board_urdf():
+    xacro_file = os.path.join(PACKAGE, 'urdf', 'marker_board.urdf.xacro')
+    return subprocess.run(['xacro', xacro_file, 'width:=%g' % WIDTH], check=True, stdout=subprocess.PIPE,
+                          text=True).stdout
 
 
 class ReadMarkerSimTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         rospy.init_node('readmarker_sim_checks')
-        cls.folder = tempfile.mkdtemp()
-        cls.texture = os.path.join(cls.folder, 'board.png')
-        cv2.imwrite(cls.texture, views.BOARD)
-        h, w = views.BOARD.shape[:2]
-        cls.urdf = board_urdf(cls.texture, WIDTH, WIDTH * h / w)
+        board = cv2.imread(os.path.join(PACKAGE, 'boards', 'board.png'))
+        cls.expected = [views.framed_crop(board, region) for region in FRAMED]
+        cls.urdf = board_urdf()
         cls.results = []
         rospy.Subscriber('cropped_img', markermsg, lambda m: cls.results.append((rospy.get_time(), m)), queue_size=5)
         rospy.wait_for_service('/gazebo/spawn_urdf_model', timeout=60)
@@ -97,8 +96,8 @@ class ReadMarkerSimTest(unittest.TestCase):
             self.assertEqual((out.image1_available, out.image2_available), (1, 1), (x, y, yaw))
             for k, compressed in enumerate((out.cimage1, out.cimage2)):
                 crop = cv2.imdecode(np.frombuffer(compressed.data, np.uint8), cv2.IMREAD_COLOR)
-                self.assertGreaterEqual(ncc(crop, views.expected(k)), 0.9, (x, y, yaw, k))
-                self.assertLess(ncc(crop, views.expected(1 - k)), 0.5)
+                self.assertGreaterEqual(ncc(crop, self.expected[k]), 0.9, (x, y, yaw, k))
+                self.assertLess(ncc(crop, self.expected[1 - k]), 0.5)
 
 
 if __name__ == '__main__':

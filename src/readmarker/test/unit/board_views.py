@@ -45,7 +45,12 @@ MARKER = 60
 BOARD, FRAMED = draw_board(PICTURES, marker=MARKER, margin=20, between=60)
 
 
+def framed_crop(board, region):
+    """What a picture's markers frame on a board (the picture in its thin white border), at the crop's size."""
+    x0, y0, x1, y1 = region
+    return cv2.resize(board[y0:y1, x0:x1], (CROP_SIZE, CROP_SIZE), interpolation=cv2.INTER_AREA)
+
+
 def expected(k):
-    """What picture k's markers frame on the board (the picture in its thin white border), at the crop's size."""
-    x0, y0, x1, y1 = FRAMED[k]
-    return cv2.resize(BOARD[y0:y1, x0:x1], (CROP_SIZE, CROP_SIZE), interpolation=cv2.INTER_AREA)
+    """Picture k's crop from BOARD."""
+    return framed_crop(BOARD, FRAMED[k])

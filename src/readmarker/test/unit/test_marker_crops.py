@@ -64,3 +64,17 @@ def test_no_board_at_all():
     detection = MarkerReader().read(np.full((480, 640, 3), 128, np.uint8))
     assert detection.ids == []
     assert [c.reason for c in detection.crops] == ['markers 1, 2, 3, 4 not seen', 'markers 5, 6, 7, 8 not seen']
+
+
+def test_the_full_three_window_scan_runs_only_when_the_quick_pass_leaves_a_picture_incomplete():
+    reader = MarkerReader()
+    reader.read(camera_view(BOARD, looking_at(BOARD, 0.1)))
+    assert reader.full_scans == 0
+    # Small, blurred and noisy: one 13 px thresholding window misses a marker of each picture,
+    # the three windows together find picture 2 whole.
+    view = camera_view(BOARD, looking_at(BOARD, 0.2, scale=0.425), blur=5, noise=8)
+    detection = reader.read(view)
+    assert reader.full_scans == 1
+    assert not detection.crops[0].available
+    assert detection.crops[1].available, detection.crops[1].reason
+    assert ncc(detection.crops[1].image, expected(1)) >= 0.9
