@@ -5,6 +5,7 @@
 #include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <cmath>
 
 #include "bullet_sim_core/description_error.h"
@@ -146,6 +147,23 @@ void PhysicsModel::buildMultiBody(const Eigen::Isometry3d& pose, double step_siz
   const bool fixed_base = description_.fixed_base;
   for (size_t i = 0; i < plans.size(); ++i)
     computeMassProperties(plans[i], name(), i > 0 || !fixed_base, warnings);
+  for (size_t i = 0; i < plans.size(); ++i) {
+    const BodyPlan& plan = plans[i];
+    Weightless w{static_cast<int>(i) - 1, 0.0, Eigen::Vector3d::Zero()};
+    const bool all = std::all_of(plan.members.begin(), plan.members.end(), [](const auto& m) { return !m.first->gravity; });
+    if (all) {
+      w.mass = plan.mass;  // including a substituted mass
+    } else {
+      Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
+      for (const auto& [link, frame] : plan.members) {
+        if (link->gravity) continue;
+        w.mass += link->inertial.mass;
+        weighted += link->inertial.mass * (plan.com.inverse() * frame * link->inertial.origin).translation();
+      }
+      if (w.mass > 0) w.com_in_body = weighted / w.mass;
+    }
+    if (w.mass > 0) weightless_.push_back(w);
+  }
 
   // 2. The multibody: plan i > 0 is Bullet link i-1. Frames follow Bullet's URDF importer:
   //    every body is represented in its principal-axes COM frame.
@@ -416,6 +434,20 @@ double PhysicsModel::jointMotorForce(int j) const {
 void PhysicsModel::beforeStep() {
   if (!multibody_) return;
   updateLimits();
+  const Eigen::Vector3d gravity(world_.getGravity().x(), world_.getGravity().y(), world_.getGravity().z());
+  for (const Weightless& w : weightless_) {
+    const Eigen::Isometry3d com = bodyComPose(w.body);
+    const Eigen::Vector3d force = -w.mass * gravity;
+    const btVector3 f = toBullet(force);
+    const btVector3 tau = toBullet(Eigen::Vector3d((com.linear() * w.com_in_body).cross(force)));
+    if (w.body < 0) {
+      multibody_->addBaseForce(f);
+      multibody_->addBaseTorque(tau);
+    } else {
+      multibody_->addLinkForce(w.body, f);
+      multibody_->addLinkTorque(w.body, tau);
+    }
+  }
   for (size_t j = 0; j < joints_.size(); ++j) {
     // Viscous damping from <dynamics damping>, applied explicitly like Gazebo's ODE joints.
     const double damping = -joints_[j].damping * jointVelocity(static_cast<int>(j));

@@ -183,7 +183,8 @@ LinkDescription parseLink(const Ctx& c, const SdfElement& l, ModelDescription& m
   }
   for (const SdfElement& s : l.children("sensor"))
     model.sensors.push_back({s.attribute("name"), s.attribute("type"), out.name, s, parsePlugins(s)});
-  // Other link elements (gravity, self_collide, velocity_decay, ...) do not apply here.
+  out.gravity = l.boolean("gravity", true);
+  // Other link elements (self_collide, velocity_decay, ...) do not apply here.
   return out;
 }
 

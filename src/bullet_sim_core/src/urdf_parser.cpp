@@ -210,6 +210,9 @@ std::vector<PluginDescription> readPlugins(const SdfElement& parent) {
 void readLinkBlock(const SdfElement& block, LinkDescription& link, ModelDescription& model) {
   link.mu1 = block.number("mu1", link.mu1, nonNegative());
   link.mu2 = block.number("mu2", link.mu2, nonNegative());
+  // Gazebo's URDF importer turns <turnGravityOff> into SDF's <gravity>; either is accepted.
+  link.gravity = !block.boolean("turnGravityOff", !link.gravity);
+  link.gravity = block.boolean("gravity", link.gravity);
   if (const SdfElement material = block.child("material")) {
     // Gazebo paints every visual of the link with it, whatever the URDF's own <material> says.
     const auto colour = gazeboMaterialColour(material.text());

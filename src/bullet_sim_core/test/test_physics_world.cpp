@@ -128,6 +128,54 @@ TEST(PhysicsWorld, FreeFallDropMatchesHalfGTSquared) {
   EXPECT_NEAR(box.twist().linear.z(), -kG, 0.002 * kG);
 }
 
+// <turnGravityOff> (Gazebo's URDF extension) and <gravity>false</gravity>: the link floats while
+// the world's gravity still acts on everything else.
+TEST(PhysicsWorld, ALinkWithGravityTurnedOffDoesNotFall) {
+  std::string weightless = kBox;
+  weightless.replace(weightless.find("</robot>"), 8, R"(<gazebo reference="body"><turnGravityOff>true</turnGravityOff></gazebo></robot>)");
+  weightless.replace(weightless.find("name=\"box\""), 10, "name=\"floating\"");
+  PhysicsWorld world(noGround());
+  PhysicsModel& falling = world.addModel(parse(kBox), xyzRpy(0, 0, 10, 0, 0, 0));
+  PhysicsModel& floating = world.addModel(parse(weightless), xyzRpy(2, 0, 10, 0.3, 0.2, 0.1));
+  for (int i = 0; i < 1000; ++i) world.step();
+  EXPECT_NEAR(10.0 - falling.pose().translation().z(), 0.5 * kG, 0.002 * 0.5 * kG);
+  EXPECT_NEAR(floating.pose().translation().z(), 10.0, 1e-6);
+  EXPECT_LT(floating.twist().angular.norm(), 1e-6);  // held at its centre of mass: no spin either
+}
+
+// A pendulum whose rod has no gravity stays where it is put; with gravity it swings down. The
+// rod's mass sits 0.5 m off the hinge, so a force in the wrong place would turn it.
+TEST(PhysicsWorld, APendulumWithAWeightlessRodStaysPut) {
+  const std::string swinging = pendulumUrdf(0.5, 1.0, 1e-3);
+  std::string weightless = swinging;
+  weightless.replace(weightless.find("</robot>"), 8, R"(<gazebo reference="rod"><gravity>false</gravity></gazebo></robot>)");
+  for (const bool gravity_on : {true, false}) {
+    PhysicsWorld world(noGround());
+    PhysicsModel& model = world.addModel(parse(gravity_on ? swinging : weightless), Eigen::Isometry3d::Identity());
+    model.setJointState(0, 1.0, 0.0);
+    for (int i = 0; i < 300; ++i) world.step();
+    if (gravity_on)
+      EXPECT_LT(model.jointPosition(0), 0.8);  // falling back towards 0 under g
+    else
+      EXPECT_NEAR(model.jointPosition(0), 1.0, 1e-6);
+  }
+}
+
+// In a body merged from links by fixed joints, only the links with gravity off are held up: a
+// 1 kg weightless link beside a 1 kg heavy one makes the pair fall as if it weighed 1 kg and had 2.
+TEST(PhysicsWorld, GravityOffActsPerLinkInAMergedBody) {
+  const char* pair = R"(<robot name="pair">
+    <link name="heavy"><inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+    <joint name="glue" type="fixed"><parent link="heavy"/><child link="light"/><origin xyz="0 0 0.5"/></joint>
+    <link name="light"><inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+    <gazebo reference="light"><turnGravityOff>true</turnGravityOff></gazebo></robot>)";
+  PhysicsWorld world(noGround());
+  PhysicsModel& model = world.addModel(parse(pair), xyzRpy(0, 0, 10, 0, 0, 0));
+  for (int i = 0; i < 1000; ++i) world.step();
+  EXPECT_NEAR(10.0 - model.pose().translation().z(), 0.25 * kG, 0.005 * 0.25 * kG);
+  EXPECT_LT(model.twist().angular.norm(), 1e-6);  // the lift acts on the line of the fall: no spin
+}
+
 TEST(PhysicsWorld, LinkFramesFollowTheJointChain) {
   PhysicsWorld world(noGround());
   const Eigen::Isometry3d spawn = xyzRpy(1, -2, 0.5, 0, 0, 0.7);

@@ -416,3 +416,19 @@ TEST(SdfWorldParserErrors, IncludedModelErrorsNameBothFiles) {
   expectMentions(msg, {"mem.world: <world name='w'>/<include>: in bad/nan.world: ", kData + "/bad/nan.world: ",
                        "expected a <model>, found a <world>"});
 }
+
+TEST(SdfWorldParser, LinkGravityFlag) {
+  const ResourceResolver r;
+  const WorldDescription w = parseWorldString(
+      worldWith("<model name='m'><static>true</static><link name='on'/><link name='off'><gravity>false</gravity></link></model>"), "mem.world",
+      "", r);
+  const auto& links = model(w, "m").model.links;
+  ASSERT_EQ(links.size(), 2u);
+  EXPECT_TRUE(links[0].gravity);
+  EXPECT_FALSE(links[1].gravity);
+  expectMentions(errorOf([&] {
+                   parseWorldString(worldWith("<model name='m'><link name='l'><gravity>maybe</gravity></link></model>"),
+                                    "mem.world", "", r);
+                 }),
+                 {"gravity", "maybe"});
+}

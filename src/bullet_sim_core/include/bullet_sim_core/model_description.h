@@ -53,6 +53,9 @@ struct LinkDescription {
   // isotropic coefficient, we use their mean.
   double mu1 = 1.0;
   double mu2 = 1.0;
+  // False: the world's gravity does not act on this link (Gazebo's <turnGravityOff> in a
+  // <gazebo reference> block, or SDF's <gravity>false</gravity>).
+  bool gravity = true;
 };
 
 enum class JointType { Fixed, Revolute, Continuous, Prismatic };

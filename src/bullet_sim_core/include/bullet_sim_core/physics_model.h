@@ -114,6 +114,14 @@ class PhysicsModel {
   std::vector<Limit> limits_;
   void updateLimits();
   std::vector<std::unique_ptr<btMultiBodyJointMotor>> motors_;  // per joint, created on first use
+  // The mass of a body's links with gravity off, held up by an equal and opposite force at
+  // their centre of mass every step (Bullet applies gravity per multibody, not per link).
+  struct Weightless {
+    int body = -1;
+    double mass = 0.0;
+    Eigen::Vector3d com_in_body = Eigen::Vector3d::Zero();  // in the body's COM frame
+  };
+  std::vector<Weightless> weightless_;
   double step_size_ = 0.001;
 };
 
