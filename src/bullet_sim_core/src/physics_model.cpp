@@ -377,6 +377,11 @@ const btCollisionObject* PhysicsModel::linkCollider(const std::string& link) con
   return it->second.body < 0 ? multibody_->getBaseCollider() : multibody_->getLink(it->second.body).m_collider;
 }
 
+PhysicsModel::BodyOfLink PhysicsModel::bodyOfLink(const std::string& link) const {
+  const LinkRef& ref = links_.at(link);
+  return {multibody_.get(), ref.body, bodyComPose(ref.body)};
+}
+
 void PhysicsModel::addLinkWrench(const std::string& link, const Eigen::Vector3d& force, const Eigen::Vector3d& torque,
                                  const Eigen::Vector3d& point) {
   if (!multibody_) return;

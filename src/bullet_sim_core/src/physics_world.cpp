@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <BulletCollision/CollisionDispatch/btManifoldResult.h>
+#include <BulletDynamics/Featherstone/btMultiBodyFixedConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
 #include "bullet_sim_core/description_error.h"
@@ -137,7 +138,10 @@ PhysicsWorld::PhysicsWorld(const PhysicsSettings& settings)
   setSettings(settings);
 }
 
-PhysicsWorld::~PhysicsWorld() { models_.clear(); }
+PhysicsWorld::~PhysicsWorld() {
+  while (!attachments_.empty()) detach(attachments_.back().id);
+  models_.clear();
+}
 
 void PhysicsWorld::setSettings(const PhysicsSettings& s) {
   if (!std::isfinite(s.max_step_size) || s.max_step_size <= 0 || s.max_step_size > 0.1)
@@ -174,7 +178,46 @@ PhysicsModel& PhysicsWorld::addModel(const ModelDescription& description, const 
 bool PhysicsWorld::removeModel(const std::string& name) {
   auto it = std::find_if(models_.begin(), models_.end(), [&](const auto& m) { return m->name() == name; });
   if (it == models_.end()) return false;
-  models_.erase(it);
+  std::vector<int> joined;
+  for (const auto& a : attachments_)
+    if (a.model_a == name || a.model_b == name) joined.push_back(a.id);
+  for (int id : joined) detach(id);
+  models_.erase(std::find_if(models_.begin(), models_.end(), [&](const auto& m) { return m->name() == name; }));
+  return true;
+}
+
+int PhysicsWorld::attach(const std::string& model_a, const std::string& link_a, const std::string& model_b,
+                         const std::string& link_b) {
+  const auto body = [&](const std::string& model, const std::string& link) {
+    const PhysicsModel* m = findModel(model);
+    if (!m) throw DescriptionError("attach: no model named '" + model + "'");
+    if (!m->hasLink(link)) throw DescriptionError("attach: model '" + model + "' has no link '" + link + "'");
+    const PhysicsModel::BodyOfLink b = m->bodyOfLink(link);
+    if (!b.multibody) throw DescriptionError("attach: model '" + model + "' is static; nothing to hold");
+    return b;
+  };
+  const PhysicsModel::BodyOfLink a = body(model_a, link_a), b = body(model_b, link_b);
+  if (a.multibody == b.multibody && a.body == b.body)
+    throw DescriptionError("attach: '" + link_a + "' and '" + link_b + "' already move as one body");
+  // The constraint holds b's COM frame where it is now in a's COM frame.
+  const Eigen::Isometry3d b_in_a = a.com.inverse() * b.com;
+  const Eigen::Matrix3d frame_in_a = b_in_a.linear();
+  btMatrix3x3 frame(frame_in_a(0, 0), frame_in_a(0, 1), frame_in_a(0, 2), frame_in_a(1, 0), frame_in_a(1, 1),
+                    frame_in_a(1, 2), frame_in_a(2, 0), frame_in_a(2, 1), frame_in_a(2, 2));
+  const Eigen::Vector3d pivot = b_in_a.translation();
+  auto constraint = std::make_unique<btMultiBodyFixedConstraint>(
+      a.multibody, a.body, b.multibody, b.body, btVector3(pivot.x(), pivot.y(), pivot.z()), btVector3(0, 0, 0), frame,
+      btMatrix3x3::getIdentity());
+  world_->addMultiBodyConstraint(constraint.get());
+  attachments_.push_back({next_attachment_id_, model_a, model_b, std::move(constraint)});
+  return next_attachment_id_++;
+}
+
+bool PhysicsWorld::detach(int id) {
+  auto it = std::find_if(attachments_.begin(), attachments_.end(), [&](const auto& a) { return a.id == id; });
+  if (it == attachments_.end()) return false;
+  world_->removeMultiBodyConstraint(it->constraint.get());
+  attachments_.erase(it);
   return true;
 }
 

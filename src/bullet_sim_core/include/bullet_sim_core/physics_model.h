@@ -52,6 +52,15 @@ class PhysicsModel {
   // Collision object that carries this link (after merging; a static model's link: its first
   // shape's), or nullptr; sensors ignore it.
   const btCollisionObject* linkCollider(const std::string& link) const;
+  // The multibody link a link moves with (body -1: the base) and that body's COM frame in the
+  // world, for constraints between models (PhysicsWorld::attach); multibody is nullptr for a
+  // static model. Throws std::out_of_range for an unknown link.
+  struct BodyOfLink {
+    btMultiBody* multibody = nullptr;
+    int body = -1;
+    Eigen::Isometry3d com = Eigen::Isometry3d::Identity();
+  };
+  BodyOfLink bodyOfLink(const std::string& link) const;
   // Adds a world-frame force/torque at `point` (world) to the link for the next step only.
   void addLinkWrench(const std::string& link, const Eigen::Vector3d& force, const Eigen::Vector3d& torque,
                      const Eigen::Vector3d& point);

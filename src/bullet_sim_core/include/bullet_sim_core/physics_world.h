@@ -38,6 +38,13 @@ class PhysicsWorld {
 
   btMultiBodyDynamicsWorld& bulletWorld() { return *world_; }
   const btMultiBodyDynamicsWorld& bulletWorld() const { return *world_; }
+  // Fixes `link_b` of `model_b` to `link_a` of `model_a` where they are now (a fixed constraint
+  // holding their present relative pose, so nothing jumps), as Gazebo's grasp fix and link
+  // attacher do. Returns the attachment's id. Throws DescriptionError for an unknown model or
+  // link, a static model, or two links of one body. Removing either model detaches them.
+  int attach(const std::string& model_a, const std::string& link_a, const std::string& model_b,
+             const std::string& link_b);
+  bool detach(int id);  // false if there is no such attachment
   // What the last addModel substituted (e.g. a missing inertial), for the node to log.
   const std::vector<std::string>& warnings() const { return warnings_; }
 
@@ -50,6 +57,13 @@ class PhysicsWorld {
   std::unique_ptr<btDbvtBroadphase> broadphase_;
   std::unique_ptr<btMultiBodyConstraintSolver> solver_;  // friction along the slip: see physics_world.cpp
   std::unique_ptr<btMultiBodyDynamicsWorld> world_;
+  struct Attachment {
+    int id = 0;
+    std::string model_a, model_b;
+    std::unique_ptr<btMultiBodyConstraint> constraint;
+  };
+  std::vector<Attachment> attachments_;  // destroyed before the models they join
+  int next_attachment_id_ = 1;
   std::vector<std::unique_ptr<PhysicsModel>> models_;  // destroyed before the world
   std::vector<std::string> warnings_;
 };
