@@ -382,6 +382,10 @@ PhysicsModel::BodyOfLink PhysicsModel::bodyOfLink(const std::string& link) const
   return {multibody_.get(), ref.body, bodyComPose(ref.body)};
 }
 
+btCollisionObject* PhysicsModel::linkCollider(const std::string& link) {
+  return const_cast<btCollisionObject*>(static_cast<const PhysicsModel&>(*this).linkCollider(link));
+}
+
 void PhysicsModel::addLinkWrench(const std::string& link, const Eigen::Vector3d& force, const Eigen::Vector3d& torque,
                                  const Eigen::Vector3d& point) {
   if (!multibody_) return;

@@ -52,6 +52,7 @@ class PhysicsModel {
   // Collision object that carries this link (after merging; a static model's link: its first
   // shape's), or nullptr; sensors ignore it.
   const btCollisionObject* linkCollider(const std::string& link) const;
+  btCollisionObject* linkCollider(const std::string& link);  // e.g. to stop it colliding with another
   // The multibody link a link moves with (body -1: the base) and that body's COM frame in the
   // world, for constraints between models (PhysicsWorld::attach); multibody is nullptr for a
   // static model. Throws std::out_of_range for an unknown link.

@@ -1,0 +1,71 @@
+#pragma once
+// The grasp fix's decision, without ROS or physics (libgazebo_grasp_fix.so's semantics, our own
+// rules where upstream's hurt): when is an object held by the gripper, and when is it let go.
+//
+// Every check (update_rate times a second of sim time) brings the touches between the gripper's
+// links and other objects. An object is gripped in a check when two gripper links push on it in
+// roughly opposing directions: the angle between their pushes is at least
+// 180 - forces_angle_tolerance degrees. Its grip count goes up by one in a check where it is
+// gripped (up to max_grip_count) and down by one where it is not; at grip_count_threshold it is
+// attached. It is released when the gripper opens: the gripper links' spread (the plugin passes
+// the mean distance of their centres of mass from their centroid) grows by more than
+// release_tolerance beyond the tightest it has been since the attach. Measuring from the tightest
+// spread, not from the spread at the attach, means a gripper that closes further after the attach
+// still lets go as soon as it opens (upstream compares with the attach and can hold for ever).
+// A released object starts again from a count of 0, so it cannot flicker between attached and
+// released while the fingers are still near it.
+#include <Eigen/Core>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace bullet_sim {
+
+struct GraspFixOptions {
+  double forces_angle_tolerance = 100.0;  // degrees
+  double update_rate = 5.0;               // checks per second of sim time
+  int grip_count_threshold = 5;
+  int max_grip_count = 10;
+  double release_tolerance = 0.005;  // m
+  bool disable_collisions_on_attach = false;
+};
+
+// "" if usable, else what is wrong, naming the field.
+std::string validate(const GraspFixOptions& options);
+
+class GraspDetector {
+ public:
+  struct Touch {
+    std::string object;           // what is touched (the plugin's key: model and link)
+    int gripper_link = 0;         // which gripper link touches it (index)
+    Eigen::Vector3d push;         // direction of the gripper link's push on the object (any length > 0)
+  };
+  struct Event {
+    std::string object;
+    bool attached = false;  // true: attach it now; false: release it now
+  };
+
+  explicit GraspDetector(const GraspFixOptions& options) : options_(options) {}
+
+  // One check: this check's touches and the gripper's spread (m). Returns what changes.
+  std::vector<Event> update(const std::vector<Touch>& touches, double spread);
+  // Forgets an object (e.g. it was deleted), attached or not; no event.
+  void forget(const std::string& object);
+  bool isAttached(const std::string& object) const;
+  int gripCount(const std::string& object) const;
+
+  // Whether two gripper links push on an object in roughly opposing directions.
+  static bool opposing(const std::vector<Touch>& touches_of_one_object, double tolerance_degrees);
+
+ private:
+  struct State {
+    int count = 0;
+    bool attached = false;
+    double tightest = 0.0;  // the smallest spread since the attach
+  };
+  GraspFixOptions options_;
+  std::map<std::string, State> objects_;
+};
+
+}  // namespace bullet_sim

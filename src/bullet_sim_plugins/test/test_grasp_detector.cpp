@@ -1,0 +1,123 @@
+// The grasp fix's decisions (grasp_detector.h): opposing pushes, grip counts, attach, release.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "bullet_sim_plugins/grasp_detector.h"
+
+namespace bullet_sim {
+namespace {
+
+using Touch = GraspDetector::Touch;
+
+// Two fingers pushing on `object` from either side, the second turned by `angle` (rad) from opposing.
+std::vector<Touch> pinch(const std::string& object, double angle = 0.0) {
+  return {{object, 0, Eigen::Vector3d(1, 0, 0)}, {object, 1, Eigen::Vector3d(-std::cos(angle), std::sin(angle), 0)}};
+}
+
+TEST(GraspDetector, OpposingMeansAtLeast180MinusTheToleranceApart) {
+  const double deg = M_PI / 180;
+  EXPECT_TRUE(GraspDetector::opposing(pinch("can"), 0.0));              // exactly opposite
+  EXPECT_TRUE(GraspDetector::opposing(pinch("can", 99 * deg), 100.0));  // 81 degrees apart >= 80
+  EXPECT_FALSE(GraspDetector::opposing(pinch("can", 101 * deg), 100.0));
+  EXPECT_FALSE(GraspDetector::opposing(pinch("can", 10 * deg), 5.0));
+  // One finger, however many contacts, never grips; contacts of one link are summed first.
+  EXPECT_FALSE(GraspDetector::opposing({{"can", 0, Eigen::Vector3d(1, 0, 0)}, {"can", 0, Eigen::Vector3d(-1, 0, 0.1)}},
+                                       180.0));
+}
+
+TEST(GraspDetector, AttachesAtTheThresholdCheckAndOnlyOnce) {
+  GraspFixOptions o;
+  o.grip_count_threshold = 4;
+  o.max_grip_count = 8;
+  GraspDetector d(o);
+  for (int check = 1; check <= 3; ++check) {
+    EXPECT_TRUE(d.update(pinch("can"), 0.07).empty()) << check;
+    EXPECT_EQ(d.gripCount("can"), check);
+  }
+  const auto events = d.update(pinch("can"), 0.07);
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].object, "can");
+  EXPECT_TRUE(events[0].attached);
+  EXPECT_TRUE(d.isAttached("can"));
+  for (int check = 0; check < 10; ++check) EXPECT_TRUE(d.update(pinch("can"), 0.07).empty());
+  EXPECT_EQ(d.gripCount("can"), 8);  // capped at max_grip_count
+}
+
+TEST(GraspDetector, ACountFallsWhileNotGrippedAndOneFingerNeverAttaches) {
+  GraspFixOptions o;
+  o.grip_count_threshold = 4;
+  GraspDetector d(o);
+  for (int i = 0; i < 3; ++i) d.update(pinch("can"), 0.07);
+  d.update({}, 0.07);
+  d.update({{"can", 0, Eigen::Vector3d(1, 0, 0)}}, 0.07);  // one finger: not a grip
+  EXPECT_EQ(d.gripCount("can"), 1);
+  EXPECT_TRUE(d.update(pinch("can"), 0.07).empty());
+  EXPECT_TRUE(d.update(pinch("can"), 0.07).empty());
+  EXPECT_EQ(d.update(pinch("can"), 0.07).size(), 1u);  // 4 again
+  GraspDetector lonely(o);
+  for (int i = 0; i < 20; ++i) EXPECT_TRUE(lonely.update({{"can", 1, Eigen::Vector3d(0, 1, 0)}}, 0.07).empty());
+}
+
+TEST(GraspDetector, ReleasesWhenTheGripperOpensBeyondTheToleranceFromItsTightest) {
+  GraspFixOptions o;
+  o.grip_count_threshold = 2;
+  o.release_tolerance = 0.005;
+  GraspDetector d(o);
+  d.update(pinch("can"), 0.070);
+  ASSERT_EQ(d.update(pinch("can"), 0.070).size(), 1u);
+  d.update(pinch("can"), 0.066);                      // squeezed 4 mm tighter after the attach
+  EXPECT_TRUE(d.update(pinch("can"), 0.070).empty());  // 4 mm open from the tightest: still held
+  EXPECT_TRUE(d.isAttached("can"));
+  const auto events = d.update({}, 0.0715);  // 5.5 mm open from the tightest: let go
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_FALSE(events[0].attached);
+  EXPECT_FALSE(d.isAttached("can"));
+  EXPECT_EQ(d.gripCount("can"), 0);
+}
+
+TEST(GraspDetector, AReleasedObjectStartsAgainRatherThanFlickering) {
+  GraspFixOptions o;
+  o.grip_count_threshold = 3;
+  GraspDetector d(o);
+  for (int i = 0; i < 3; ++i) d.update(pinch("can"), 0.07);
+  ASSERT_TRUE(d.isAttached("can"));
+  ASSERT_EQ(d.update(pinch("can"), 0.08).size(), 1u);  // opened while the fingers still touch
+  EXPECT_TRUE(d.update(pinch("can"), 0.08).empty());   // count 1
+  EXPECT_TRUE(d.update(pinch("can"), 0.08).empty());   // count 2
+  const auto again = d.update(pinch("can"), 0.08);     // count 3: a new, deliberate grip
+  ASSERT_EQ(again.size(), 1u);
+  EXPECT_TRUE(again[0].attached);
+}
+
+TEST(GraspDetector, ObjectsAreCountedApartAndForgetting) {
+  GraspFixOptions o;
+  o.grip_count_threshold = 2;
+  GraspDetector d(o);
+  auto both = pinch("can_1");
+  const auto other = pinch("can_2", 2.0);  // pushes 65 degrees apart: no grip at tolerance 100
+  both.insert(both.end(), other.begin(), other.end());
+  d.update(both, 0.07);
+  const auto events = d.update(both, 0.07);
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].object, "can_1");
+  EXPECT_FALSE(d.isAttached("can_2"));
+  d.forget("can_1");
+  EXPECT_FALSE(d.isAttached("can_1"));
+  EXPECT_EQ(d.gripCount("can_1"), 0);
+}
+
+TEST(GraspDetector, OptionsAreValidatedByName) {
+  EXPECT_EQ(validate(GraspFixOptions{}), "");
+  GraspFixOptions o;
+  o.update_rate = 0;
+  o.grip_count_threshold = 11;
+  o.forces_angle_tolerance = 200;
+  const std::string problems = validate(o);
+  for (const char* field : {"update_rate", "grip_count_threshold", "forces_angle_tolerance"})
+    EXPECT_NE(problems.find(field), std::string::npos) << field << " not in: " << problems;
+  EXPECT_EQ(problems.find("release_tolerance"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace bullet_sim
