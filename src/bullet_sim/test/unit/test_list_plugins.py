@@ -14,5 +14,5 @@ def test_the_node_lists_gazebo_ros_plugins_by_library_name():
                          timeout=30)
     assert out.returncode == 0, out.stderr
     assert out.stdout.split() == sorted([
-        'libgazebo_ros_camera.so', 'libgazebo_ros_control.so', 'libgazebo_ros_diff_drive.so',
+        'libgazebo_grasp_fix.so', 'libgazebo_ros_camera.so', 'libgazebo_ros_control.so', 'libgazebo_ros_diff_drive.so',
         'libgazebo_ros_gpu_laser.so', 'libgazebo_ros_laser.so', 'libgazebo_ros_skid_steer_drive.so'])
