@@ -1,0 +1,142 @@
+"""The stacking plan and its joint paths: the tutorial's via points in the right order and
+places, straight moves that stay on their lines, a pitch shared by grasp and place, reachable
+plans for the layouts the simulation draws, and clear reasons for cans out of reach."""
+import math
+import os
+import sys
+
+import pytest
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'src'))
+from katana_pick import katana_ik  # noqa: E402
+from katana_pick.arm_geometry import KatanaGeometry, within_limits  # noqa: E402
+from katana_pick.stacking import (Grip, Move, StackingOptions, ToolPose, can_steps, carry_height,  # noqa: E402
+                                  choose_tower, interpolate, pick_order, pitches)
+from katana_pick.trajectories import PlanError, TimingOptions, plan_can, tool_pose  # noqa: E402
+
+G = KatanaGeometry()
+O = StackingOptions()
+START = (0.0, 0.0, 0.0, 0.0, 0.0)  # the spawn pose: stretched out along x
+
+
+def test_tower_is_the_middle_can_by_bearing_and_the_nearest_go_first():
+    cans = [(0.35, 0.2), (0.3, -0.2), (0.4, 0.0), (0.33, 0.35)]
+    # By bearing: -0.59 (1), 0 (2), 0.52 (0), 0.81 (3) rad; of an even number, the lower middle.
+    assert choose_tower(cans) == 2
+    assert cans[choose_tower(cans[:3])] == (0.4, 0.0)
+    order = pick_order(cans[:3], 2)
+    assert order == [0, 1]  # (0.35, 0.2) is 0.206 m from the tower, (0.3, -0.2) 0.224 m
+
+
+def test_steps_follow_the_tutorial():
+    steps = can_steps((0.3, -0.2), (0.4, 0.0), 2, 0.06, -0.3)
+    names = [s.what for s in steps]
+    assert names == ['open before the approach', 'over to the approach point', 'in along the line from the base',
+                     'close on the can', 'lift off', 'carry over the tower', 'lower onto the tower', 'let go',
+                     'back away towards the base', 'rise']
+    grips = [s for s in steps if isinstance(s, Grip)]
+    assert [(g.position, g.hold) for g in grips] == [(0.30, False), (-0.44, True), (0.30, False)]
+    approach = steps[1].poses[-1]
+    # The approach point is approach_distance short of the can, on the line from the base.
+    assert math.hypot(approach.x, approach.y) == pytest.approx(math.hypot(0.3, -0.2) - O.approach_distance)
+    assert math.atan2(approach.y, approach.x) == pytest.approx(math.atan2(-0.2, 0.3))
+    assert steps[2].poses[-1] == ToolPose(0.3, -0.2, 0.06, -0.3)
+    # Placed at level 2: on two cans, place_gap above them, held 0.06 m above its bottom.
+    place = steps[6].poses[-1]
+    assert (place.x, place.y) == (0.4, 0.0)
+    assert place.z == pytest.approx(2 * 0.12 + O.place_gap + 0.06)
+    # Every pose of the can's move has the grasp's pitch: the can is let go upright.
+    assert {p.pitch for s in steps if isinstance(s, Move) for p in s.poses} == {-0.3}
+    # Carried above the tower's top and above the cans on the table.
+    carry = steps[5].poses[0]
+    assert carry.z - 0.06 == pytest.approx(2 * 0.12 + O.clearance)
+    assert carry_height(0, 0.06, O) == pytest.approx(0.12 + 0.06 + O.clearance)
+
+
+def test_interpolation_keeps_radial_and_vertical_moves_on_their_lines():
+    start, end = ToolPose(0.25, 0.1, 0.06, 0.0), ToolPose(0.35, 0.14, 0.06, 0.0)
+    poses = interpolate(start, end, 0.01)
+    assert len(poses) == 11 and poses[-1] == pytest.approx(end)
+    for p in poses:
+        assert math.atan2(p.y, p.x) == pytest.approx(math.atan2(0.1, 0.25))
+        assert p.z == 0.06
+    up = interpolate(end, ToolPose(0.35, 0.14, 0.16, 0.0), 0.01)
+    assert all(p.x == pytest.approx(0.35) and p.y == pytest.approx(0.14) for p in up)
+    # A carry at one height is an arc about the base's axis.
+    arc = interpolate(ToolPose(0.4, 0.0, 0.3, 0.0), ToolPose(0.0, 0.4, 0.3, 0.0), 0.01)
+    assert all(math.hypot(p.x, p.y) == pytest.approx(0.4) for p in arc)
+    assert 0.4 * math.pi / 2 / 0.01 <= len(arc) <= 0.4 * math.pi / 2 / 0.01 + 1
+
+
+def test_pitches_start_level_and_span_the_options():
+    found = pitches(O)
+    assert found[0] == 0.0
+    assert min(found) == pytest.approx(O.min_pitch, abs=O.pitch_step)
+    assert max(found) == pytest.approx(O.max_pitch, abs=1e-9)
+    assert len(found) == len(set(round(p, 9) for p in found))
+
+
+def test_a_plan_puts_the_tool_on_every_via_point_within_the_limits():
+    can, tower = (0.31, -0.18), (0.38, 0.0)
+    steps, paths = plan_can(G, START, can, tower, 1)
+    moves = [s for s in steps if isinstance(s, Move)]
+    assert len(paths) == len(moves)
+    for move, path in zip(moves, paths):
+        assert all(b > a for a, b in zip(path.times, path.times[1:])), move.what
+        for q in path.positions:
+            assert within_limits(G, q), move.what
+        # Each move ends where it should, with the settle point repeating the last one.
+        x, y, z, pitch = katana_ik.forward(G, path.positions[-1])
+        end = move.poses[-1]
+        assert (x, y, z) == pytest.approx((end.x, end.y, end.z), abs=1e-9), move.what
+        assert path.positions[-1] == path.positions[-2]
+        assert path.times[-1] - path.times[-2] == pytest.approx(TimingOptions().settle)
+        if move.line:
+            # Straight moves: every via point on the line, no more than a step apart.
+            previous = None
+            for q in path.positions:
+                p = tool_pose(G, q)
+                if previous is not None:
+                    assert math.dist((p.x, p.y, p.z), (previous.x, previous.y, previous.z)) <= 0.0101
+                previous = p
+    grasp = moves[1].poses[-1]
+    assert (grasp.x, grasp.y) == can
+    assert O.min_pitch - 1e-9 <= grasp.pitch <= O.max_pitch + 1e-9
+
+
+def test_joint_speed_and_tool_speed_bound_the_timing():
+    timing = TimingOptions(tool_speed=0.05, joint_speed=0.5)
+    steps, paths = plan_can(G, START, (0.35, 0.1), (0.38, -0.12), 1, timing=timing)
+    moves = [s for s in steps if isinstance(s, Move)]
+    fastest_joint, fastest_tool = 0.0, 0.0
+    for move, path in zip(moves, paths):
+        for (t0, q0), (t1, q1) in zip(zip(path.times, path.positions), zip(path.times[1:], path.positions[1:])):
+            dt = t1 - t0
+            fastest_joint = max(fastest_joint, max(abs(a - b) for a, b in zip(q0, q1)) / dt)
+            if move.line:
+                a, b = katana_ik.forward(G, q0)[:3], katana_ik.forward(G, q1)[:3]
+                fastest_tool = max(fastest_tool, math.dist(a, b) / dt)
+    # Each bound is reached somewhere (free moves by the joints, straight ones by the tool).
+    assert 0.45 <= fastest_joint <= 0.5 + 1e-9
+    assert 0.04 <= fastest_tool <= 0.05 + 1e-6
+
+
+def test_every_layout_the_simulation_draws_has_a_plan():
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', '..',
+                                    'katana_arm_gazebo', 'src'))
+    from katana_arm_gazebo.can_layouts import random_layout
+    for seed in range(60):
+        cans = random_layout(3, seed)
+        tower = choose_tower(cans)
+        q = START
+        for level, i in enumerate(pick_order(cans, tower), start=1):
+            steps, paths = plan_can(G, q, cans[i], cans[tower], level)
+            q = paths[-1].positions[-1]
+
+
+def test_out_of_reach_says_why():
+    with pytest.raises(PlanError, match=r'no grasp .* reaches it .*out of reach by'):
+        plan_can(G, START, (0.7, 0.0), (0.38, 0.0), 1)
+    # Near the base the elbow's limit stops the level grasp.
+    with pytest.raises(PlanError, match=r'katana_motor\d_lift_joint'):
+        plan_can(G, START, (0.15, 0.0), (0.38, 0.0), 1)
