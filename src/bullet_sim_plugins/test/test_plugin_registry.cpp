@@ -5,6 +5,7 @@
 #include <ros/console.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -113,6 +114,29 @@ TEST(PluginLoader, APluginInTheWrongPlaceIsAnErrorNamingIt) {
     EXPECT_EQ(std::string(e.what()), "box.urdf: <gazebo>/<plugin name='l' filename='libgazebo_ros_laser.so'>: "
                                      "expected this plugin inside a <sensor type='ray'> (or gpu_ray)");
   }
+}
+
+// Gazebo's way when a plugin cannot find its joints: it says so and does nothing; the model is
+// simulated without it (and no ROS name is taken).
+TEST(PluginLoader, AKatanaGripperWithoutItsFingerJointsStaysInactiveAndSaysWhy) {
+  const ModelDescription box = boxWith(
+      "<gazebo><plugin name='gazebo_ros_katana_gripper' filename='libgazebo_ros_katana_gripper.so'>"
+      "<r_finger_joint>finger</r_finger_joint></plugin></gazebo>");
+  PhysicsWorld world;
+  PhysicsModel& model = world.addModel(box, raised(1.0));
+  WarningCollector log;
+  std::vector<LoadedPlugin> plugins = loadModelPlugins(world, model, "");
+  ASSERT_EQ(plugins.size(), 1u);
+  ASSERT_EQ(log.warnings.size(), 1u);
+  EXPECT_EQ(log.warnings[0],
+            "model 'box': libgazebo_ros_katana_gripper.so: box.urdf: <gazebo>/<plugin name='gazebo_ros_katana_gripper' "
+            "filename='libgazebo_ros_katana_gripper.so'>/<r_finger_joint>: model 'box' has no joint 'finger'; the "
+            "gripper plugin stays inactive");
+  plugins[0].plugin->beforeStep(ros::Time(0.001), 0.001);
+  world.step();
+  plugins[0].plugin->afterStep(ros::Time(0.001));
+  plugins[0].plugin->reset();
+  EXPECT_TRUE(std::isfinite(model.pose().translation().z()));
 }
 
 }  // namespace

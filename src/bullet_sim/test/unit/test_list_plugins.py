@@ -15,4 +15,5 @@ def test_the_node_lists_gazebo_ros_plugins_by_library_name():
     assert out.returncode == 0, out.stderr
     assert out.stdout.split() == sorted([
         'libgazebo_grasp_fix.so', 'libgazebo_ros_camera.so', 'libgazebo_ros_control.so', 'libgazebo_ros_diff_drive.so',
-        'libgazebo_ros_gpu_laser.so', 'libgazebo_ros_laser.so', 'libgazebo_ros_skid_steer_drive.so'])
+        'libgazebo_ros_gpu_laser.so', 'libgazebo_ros_katana_gripper.so', 'libgazebo_ros_laser.so',
+        'libgazebo_ros_skid_steer_drive.so'])
