@@ -1,7 +1,7 @@
 """katana_450_6m90a.urdf.xacro expands cleanly and describes the Katana 450 6M90A: katana_driver's
 names, the published lengths (checked by forward kinematics of the expanded URDF), limits,
-transmissions, masses and inertias, and the tutorial's laser and grasp fix (no ROS master needed:
-xacro only, plus roslaunch --dump-params for the upload launch file)."""
+transmissions, masses and inertias, the gripper plugin, and the tutorial's laser and grasp fix
+(no ROS master needed: xacro only, plus roslaunch --dump-params for the upload launch file)."""
 import math
 import os
 import shutil
@@ -32,6 +32,12 @@ TUTORIAL_GRASP_FIX = """
 <grip_count_threshold>4</grip_count_threshold> <max_grip_count>8</max_grip_count>
 <release_tolerance>0.005</release_tolerance> <disable_collisions_on_attach>false</disable_collisions_on_attach>
 <contact_topic>__default_topic__</contact_topic> </plugin> </gazebo>"""
+
+# katana_gazebo_plugins' gripper block, as upstream's gazebo.urdf.xacro has it.
+UPSTREAM_GRIPPER = """
+<gazebo> <plugin name="gazebo_ros_katana_gripper" filename="libgazebo_ros_katana_gripper.so">
+<r_finger_joint>katana_r_finger_joint</r_finger_joint> <l_finger_joint>katana_l_finger_joint</l_finger_joint>
+</plugin> </gazebo>"""
 
 
 def run_xacro(*args):
@@ -375,6 +381,18 @@ def test_the_grasp_fix_block_is_the_tutorials(robot):
               if any(p.get('filename') == 'libgazebo_grasp_fix.so' for p in g.findall('plugin'))]
     assert len(blocks) == 1
     assert canonical(blocks[0]) == canonical(ET.fromstring(TUTORIAL_GRASP_FIX))
+
+
+def test_the_gripper_plugin_block_is_upstreams_and_names_the_finger_joints(robot):
+    blocks = [g for g in robot.findall('gazebo')
+              if any(p.get('filename') == 'libgazebo_ros_katana_gripper.so' for p in g.findall('plugin'))]
+    assert len(blocks) == 1
+    assert canonical(blocks[0]) == canonical(ET.fromstring(UPSTREAM_GRIPPER))
+    plugin = blocks[0].find('plugin')
+    fingers = [plugin.findtext('r_finger_joint'), plugin.findtext('l_finger_joint')]
+    assert fingers == FINGER_JOINTS
+    for name in fingers:
+        assert joint(robot, name).get('type') == 'revolute'
 
 
 def has_laser(robot):
