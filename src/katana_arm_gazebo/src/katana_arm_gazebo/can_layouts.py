@@ -13,10 +13,10 @@ from typing import List, Tuple
 @dataclass(frozen=True)
 class LayoutRules:
     # m from the base's axis. The Katana grasps a can and sets it on a tower two cans high at the
-    # same pitch (the can hangs in the gripper as it was taken) only between about 0.33 and
+    # same pitch (the can hangs in the gripper as it was taken) only between about 0.34 and
     # 0.43 m: nearer, the elbow's limit (-2.22 rad) stops it reaching down; farther, up.
-    # katana_pick's planner finds a grasp for every layout of 200 seeds within these.
-    min_range: float = 0.33
+    # katana_pick's planner finds a grasp for every layout of 300 seeds within these.
+    min_range: float = 0.34
     max_range: float = 0.42
     max_bearing: float = math.radians(70)  # the laser sees +-90 degrees; keep clear of its edges
     min_spacing: float = 0.15   # m between can axes: 2 radii + the open fingers + clearance

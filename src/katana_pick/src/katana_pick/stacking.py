@@ -23,6 +23,10 @@ class StackingOptions:
     # first; higher up brings cans nearer the base within reach.
     grasp_heights: Tuple[float, ...] = (0.06, 0.08, 0.10)
     approach_distance: float = 0.07   # m: the open fingertips (0.023 m past the tool frame) clear the can
+    # m back from the tower after letting go: far enough that no part of the open gripper is over
+    # the tower when the arm turns to the next can (0.033 + 0.023 m, and room for the joint-space
+    # move's bulge).
+    retreat_distance: float = 0.10
     lift: float = 0.03                # m straight up after the grasp, and down onto the tower
     clearance: float = 0.04           # m between a carried can and what it passes over
     place_gap: float = 0.005          # m above the tower's top where the can is let go
@@ -112,7 +116,7 @@ def can_steps(can: Tuple[float, float], tower: Tuple[float, float], level: int, 
     before = _on_line(x, y, o.approach_distance, grasp_height, pitch)
     place_z = level * o.can_height + o.place_gap + grasp_height
     place = ToolPose(tx, ty, place_z, pitch)
-    away = _on_line(tx, ty, o.approach_distance, place_z, pitch)
+    away = _on_line(tx, ty, o.retreat_distance, place_z, pitch)
     return [
         Grip('open before the approach', o.open_position, hold=False),
         Move('over to the approach point', (ToolPose(before.x, before.y, high, pitch),
@@ -125,7 +129,7 @@ def can_steps(can: Tuple[float, float], tower: Tuple[float, float], level: int, 
         Move('lower onto the tower', (place,)),
         Grip('let go', o.open_position, hold=False),
         Move('back away towards the base', (away,)),
-        Move('rise', (ToolPose(away.x, away.y, place_z + o.lift, pitch),)),
+        Move('rise', (ToolPose(away.x, away.y, place_z + 2 * o.lift, pitch),)),
     ]
 
 
