@@ -48,8 +48,8 @@ def one_layout(seed, procs):
     names = ['can_%d' % (i + 1) for i in range(3)]
     tower = names[choose_tower(layout)]
 
-    master = launch_on_private_master(procs, 'bench_katana_stacking',
-                                      ['katana_pick', 'stack_cans.launch', 'cans_seed:=%d' % seed])
+    launch_on_private_master(procs, 'bench_katana_stacking',
+                             ['katana_pick', 'stack_cans.launch', 'cans_seed:=%d' % seed])
     import rosnode
     import rospy
     from gazebo_grasp_plugin_ros.msg import GazeboGraspEvent
@@ -107,7 +107,6 @@ def one_layout(seed, procs):
     print(json.dumps({'seed': seed, 'success': standing, 'cause': cause, 'sim_s': sim_s, 'wall_s': wall_s,
                       'found': len(seen), 'detection_errors': errors, 'events': events,
                       'errors': errors_line[:3]}), flush=True)
-    del master
 
 
 def summarise(results, command):
