@@ -15,7 +15,7 @@ as it goes until stack_cans exits. Then, from /gazebo/get_model_state:
   - otherwise the cause, the first that applies: unreachable (the planner refused a can),
     no attach (a moved can never attached to the gripper), no release (attached and never let go),
     tip-over (a can lies tilted more than 20 degrees), slip (a can was carried and let go, but is
-    not on the tower);
+    not on the tower); before those, not detected (stack_cans found fewer than the three cans);
   - seconds per moved can, sim and wall, from the cans' detection to stack_cans' exit;
   - the detection error: each can found against where it was spawned.
 """
@@ -91,7 +91,9 @@ def one_layout(seed, procs):
     cause = None
     if not standing:
         moved = [n for n in names if n != tower]
-        if 'unreachable' in log:
+        if len(detected[0].poses) < 3:
+            cause = 'not detected'
+        elif 'unreachable' in log:
             cause = 'unreachable'
         elif any((n, True) not in events for n in moved):
             cause = 'no attach'
@@ -122,7 +124,7 @@ def summarise(results, command):
     missed = sum(3 - min(r['found'], 3) for r in results)
     mean = lambda v: sum(v) / len(v) if v else float('nan')  # noqa: E731
     print('\n%d layouts of 3 cans: %d stacked (%.0f %%)' % (n, len(ok), 100.0 * len(ok) / n if n else 0))
-    for cause in ('unreachable', 'no attach', 'no release', 'tip-over', 'slip', 'run failed'):
+    for cause in ('not detected', 'unreachable', 'no attach', 'no release', 'tip-over', 'slip', 'run failed'):
         print('  %-12s %d' % (cause, causes.get(cause, 0)))
     print('seconds per can (successful layouts, 2 cans moved each): sim %.1f mean (%.1f-%.1f), wall %.1f mean'
           % (mean(per_can_sim), min(per_can_sim, default=float('nan')), max(per_can_sim, default=float('nan')),
