@@ -155,6 +155,10 @@ def main():
             print('seed %d: the run failed (exit %d): %s' % (seed, run.returncode, run.stdout[-500:]), flush=True)
             results.append({'seed': seed, 'success': False, 'cause': 'run failed', 'sim_s': 0, 'wall_s': 0,
                             'found': 0, 'detection_errors': [], 'errors': []})
+            if len(results) == 3 and all(r['cause'] == 'run failed' for r in results):
+                print('bench_katana_stacking: the first three runs failed to run at all; is the workspace '
+                      'built and scripts/env.sh sourced?', file=sys.stderr)
+                return 1
             continue
         r = json.loads(lines[-1])
         print('seed %3d: %s  sim %.1f s, wall %.1f s, %d cans found' % (
