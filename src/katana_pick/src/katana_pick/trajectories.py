@@ -104,3 +104,25 @@ def plan_can(geometry: KatanaGeometry, q_start: Sequence[float], can, tower, lev
             return feasible[len(feasible) // 2]
     raise PlanError('no grasp %s m up with a pitch in [%.2f, %.2f] rad reaches it (%s)' % (
         '/'.join('%.2f' % h for h in options.grasp_heights), options.min_pitch, options.max_pitch, why_not))
+
+
+def back_off(geometry: KatanaGeometry, q_now: Sequence[float], q_home: Sequence[float],
+             options: StackingOptions = StackingOptions(), roll: float = 0.0,
+             timing: TimingOptions = TimingOptions()) -> JointPath:
+    """After a failed step: the tool straight up by options.retreat_distance (clear of the can it
+    was at; skipped where the arm cannot go straight up), then the joints back to q_home, where
+    the arm started and left the laser's view of the table clear."""
+    here = tool_pose(geometry, q_now)
+    up = Move('straight up', (ToolPose(here.x, here.y, here.z + options.retreat_distance, here.pitch),))
+    try:
+        path = joint_path(geometry, q_now, up, roll, timing)
+        times, positions = list(path.times[:-1]), list(path.positions[:-1])
+    except PlanError:
+        times, positions = [], []
+    last = positions[-1] if positions else tuple(q_now)
+    t = times[-1] if times else 0.0
+    turn = max(abs(a - b) for a, b in zip(q_home, last))
+    t += max(turn / timing.joint_speed, timing.min_interval)
+    times += [t, t + timing.settle]
+    positions += [tuple(q_home), tuple(q_home)]
+    return JointPath(tuple(times), tuple(positions), tool_pose(geometry, q_home))

@@ -12,7 +12,7 @@ from katana_pick import katana_ik  # noqa: E402
 from katana_pick.arm_geometry import KatanaGeometry, within_limits  # noqa: E402
 from katana_pick.stacking import (Grip, Move, StackingOptions, ToolPose, can_steps, carry_height,  # noqa: E402
                                   choose_tower, interpolate, pick_order, pitches)
-from katana_pick.trajectories import PlanError, TimingOptions, plan_can, tool_pose  # noqa: E402
+from katana_pick.trajectories import PlanError, TimingOptions, back_off, plan_can, tool_pose  # noqa: E402
 
 G = KatanaGeometry()
 O = StackingOptions()
@@ -140,3 +140,21 @@ def test_out_of_reach_says_why():
     # Near the base the elbow's limit stops the level grasp.
     with pytest.raises(PlanError, match=r'katana_motor\d_lift_joint'):
         plan_can(G, START, (0.15, 0.0), (0.38, 0.0), 1)
+
+
+def test_backing_off_goes_straight_up_then_home():
+    steps, paths = plan_can(G, START, (0.35, 0.1), (0.38, -0.12), 1)
+    at_can = paths[1].positions[-1]  # the tool at the grasp, fingers about the can
+    grasp = tool_pose(G, at_can)
+    path = back_off(G, at_can, START)
+    assert path.positions[-1] == START and path.positions[-2] == START
+    # Up by retreat_distance along the vertical first, then a joint move home.
+    up = [tool_pose(G, q) for q in path.positions[:-2]]
+    for p in up:
+        assert math.hypot(p.x - grasp.x, p.y - grasp.y) < 1e-6
+    assert up[-1].z == pytest.approx(grasp.z + O.retreat_distance, abs=1e-9)
+    assert all(b > a for a, b in zip(path.times, path.times[1:]))
+    # Where the arm cannot go straight up (stretched out flat), it only goes home.
+    stretched = back_off(G, START, (0.0, 0.5, 0.0, 0.0, 0.0))
+    assert len(stretched.positions) == 2 and stretched.positions[-1] == (0.0, 0.5, 0.0, 0.0, 0.0)
+    assert stretched.times[0] == pytest.approx(0.5 / TimingOptions().joint_speed)

@@ -1,0 +1,93 @@
+#!/usr/bin/env python3
+"""stack_cans with faults: of four cans, can_4 stands beyond the arm's reach and can_3 is deleted
+from the world as soon as stack_cans has seen it. stack_cans skips can_4 and says why, fails to
+grip can_3, backs off, looks again, reports it gone, and still puts can_1 on the tower (can_2);
+can_4 is never touched. Ground truth from /gazebo/get_model_state, the reports from /rosout."""
+import math
+import sys
+import time
+import unittest
+
+import rosnode
+import rospy
+import rostest
+from gazebo_grasp_plugin_ros.msg import GazeboGraspEvent
+from geometry_msgs.msg import PoseArray
+from rosgraph_msgs.msg import Log
+
+from bullet_sim_testing.gazebo import Gazebo, set_real_time_factor
+
+TABLE = 0.4
+CAN_HEIGHT = 0.12
+LAYOUT = {'can_1': (0.31, -0.18), 'can_2': (0.38, 0.0), 'can_3': (0.31, 0.18), 'can_4': (0.45, -0.45)}
+
+
+def tilt(orientation):
+    return 2 * math.asin(min(1.0, math.hypot(orientation.x, orientation.y)))
+
+
+class StackCansFaultsTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node('test_stack_cans_faults')
+        cls.events, cls.reports = [], []
+        rospy.Subscriber('/gazebo/grasp_events', GazeboGraspEvent, cls.events.append)
+        rospy.Subscriber('/rosout', Log, lambda m: m.name == '/stack_cans' and cls.reports.append(m.msg))
+        cls.gazebo = Gazebo()
+        cls.detected = None
+        deadline = time.monotonic() + 60
+        while time.monotonic() < deadline and cls.detected is None:
+            try:
+                cls.detected = rospy.wait_for_message('/stack_cans/cans', PoseArray, 0.5)
+            except rospy.ROSException:
+                pass
+        assert cls.detected is not None, 'stack_cans published no cans within 60 s'
+        cls.deleted = cls.gazebo.delete_model(model_name='can_3').success
+        set_real_time_factor(0.0)
+        while time.monotonic() < deadline + 180 and '/stack_cans' in rosnode.get_node_names():
+            time.sleep(0.5)
+        cls.finished = '/stack_cans' not in rosnode.get_node_names()
+
+    def truth(self, name):
+        state = self.gazebo.state(name)
+        self.assertTrue(state.success, name)
+        return state.pose
+
+    def reported(self, pattern):
+        return [r for r in self.reports if all(p in r for p in pattern)]
+
+    def test_1_all_four_cans_are_seen(self):
+        self.assertTrue(self.deleted)
+        seen = [(p.position.x, p.position.y) for p in self.detected.poses]
+        self.assertEqual(len(seen), 4)
+        for name, xy in LAYOUT.items():
+            self.assertLess(min(math.dist(xy, s) for s in seen), 0.005, name)
+
+    def test_2_the_can_out_of_reach_is_skipped_with_the_reason_and_left_alone(self):
+        self.assertTrue(self.finished, 'stack_cans still running after 180 s')
+        self.assertTrue(self.reported(['(0.45', '-0.45', 'unreachable, skipped', 'out of reach by']), self.reports)
+        p = self.truth('can_4').position
+        self.assertLess(math.dist((p.x, p.y, p.z), LAYOUT['can_4'] + (TABLE,)), 0.005)
+
+    def test_3_the_vanished_can_is_tried_backed_off_from_and_reported_gone(self):
+        self.assertTrue(self.finished)
+        self.assertEqual(len(self.reported(['(0.31', '0.18', 'attempt 1 of 2 failed at close on the can',
+                                            'nothing between the fingers'])), 1, self.reports)
+        self.assertEqual(len(self.reported(['(0.31', '0.18', 'gone'])), 1, self.reports)
+        self.assertTrue(self.reported(['stacked 1 of 3 cans on the tower (2 high)']), self.reports)
+
+    def test_4_the_other_can_still_makes_a_tower_of_two(self):
+        self.assertTrue(self.finished)
+        bottom, top = self.truth('can_2'), self.truth('can_1')
+        self.assertLess(math.hypot(bottom.position.x - 0.38, bottom.position.y), 0.01)
+        self.assertAlmostEqual(top.position.z, TABLE + CAN_HEIGHT, delta=0.005)
+        self.assertLess(math.hypot(top.position.x - bottom.position.x, top.position.y - bottom.position.y), 0.015)
+        self.assertLess(tilt(top.orientation), math.radians(3))
+        by_can = {}
+        for e in self.events:
+            by_can.setdefault(e.object, []).append(e.attached)
+        self.assertEqual(by_can, {'can_1': [True, False]})
+
+
+if __name__ == '__main__':
+    rostest.rosrun('katana_pick', 'test_stack_cans_faults', StackCansFaultsTest, sys.argv)
