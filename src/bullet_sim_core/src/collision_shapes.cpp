@@ -36,6 +36,34 @@ class HalfSpaceShape : public btStaticPlaneShape {
   }
 };
 
+// Friction anchors on the points added while it lives: a new point near a sticking one (within
+// the friction cone) leaves the old one in place, so the friction rows hold the bodies where they
+// first touched instead of where the last step left them, which is what stops the creep. Bullet
+// only offers them per collision object (CF_HAS_FRICTION_ANCHOR, read by
+// btManifoldResult::addContactPoint), and on a rolling wheel they would keep contacts the wheel
+// has rolled away from; so the flag is set on the two objects just while their cap contacts are
+// added.
+class FrictionAnchors {
+ public:
+  explicit FrictionAnchors(btPersistentManifold* manifold)
+      : objects_{const_cast<btCollisionObject*>(manifold->getBody0()),
+                 const_cast<btCollisionObject*>(manifold->getBody1())} {
+    for (int i = 0; i < 2; ++i) {
+      flags_[i] = objects_[i]->getCollisionFlags();
+      objects_[i]->setCollisionFlags(flags_[i] | btCollisionObject::CF_HAS_FRICTION_ANCHOR);
+    }
+  }
+  ~FrictionAnchors() {
+    for (int i = 0; i < 2; ++i) objects_[i]->setCollisionFlags(flags_[i]);
+  }
+  FrictionAnchors(const FrictionAnchors&) = delete;
+  FrictionAnchors& operator=(const FrictionAnchors&) = delete;
+
+ private:
+  btCollisionObject* objects_[2];
+  int flags_[2];
+};
+
 // See makeCylinderPlaneAlgorithm in the header.
 class CylinderPlaneAlgorithm : public btActivatingCollisionAlgorithm {
  public:
@@ -140,12 +168,154 @@ class CylinderPlaneAlgorithm : public btActivatingCollisionAlgorithm {
   bool swapped_;
 };
 
+// See makeCylinderCylinderAlgorithm in the header.
+class CylinderCylinderAlgorithm : public btActivatingCollisionAlgorithm {
+ public:
+  CylinderCylinderAlgorithm(const btCollisionAlgorithmConstructionInfo& info, const btCollisionObjectWrapper* body0,
+                            const btCollisionObjectWrapper* body1, btCollisionAlgorithmCreateFunc* general)
+      : btActivatingCollisionAlgorithm(info, body0, body1) {
+    const btCollisionObject* a = body0->getCollisionObject();
+    const btCollisionObject* b = body1->getCollisionObject();
+    if (m_dispatcher->needsCollision(a, b)) manifold_ = m_dispatcher->getNewManifold(a, b);
+    // Bullet's own algorithm for every other way two cylinders touch; it keeps a manifold of its own.
+    btCollisionAlgorithmConstructionInfo general_info(info.m_dispatcher1, 0);
+    general_ = general->CreateCollisionAlgorithm(general_info, body0, body1);
+  }
+  ~CylinderCylinderAlgorithm() override {
+    if (general_) {
+      general_->~btCollisionAlgorithm();
+      m_dispatcher->freeCollisionAlgorithm(general_);
+    }
+    if (manifold_) m_dispatcher->releaseManifold(manifold_);
+  }
+
+  void processCollision(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
+                        const btDispatcherInfo& info, btManifoldResult* result) override {
+    if (!manifold_) return;
+    if (!capOnCap(body0, body1, result)) {
+      manifold_->clearManifold();
+      general_->processCollision(body0, body1, info, result);
+      return;
+    }
+    btManifoldArray general_manifolds;
+    general_->getAllContactManifolds(general_manifolds);
+    for (int i = 0; i < general_manifolds.size(); ++i) general_manifolds[i]->clearManifold();
+  }
+
+  btScalar calculateTimeOfImpact(btCollisionObject* body0, btCollisionObject* body1, const btDispatcherInfo& info,
+                                 btManifoldResult* result) override {
+    return general_->calculateTimeOfImpact(body0, body1, info, result);
+  }
+
+  void getAllContactManifolds(btManifoldArray& manifolds) override {
+    if (manifold_) manifolds.push_back(manifold_);
+    general_->getAllContactManifolds(manifolds);
+  }
+
+  struct CreateFunc : public btCollisionAlgorithmCreateFunc {
+    explicit CreateFunc(btCollisionAlgorithmCreateFunc* general_func) : general(general_func) {}
+    btCollisionAlgorithm* CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& info,
+                                                   const btCollisionObjectWrapper* body0,
+                                                   const btCollisionObjectWrapper* body1) override {
+      void* memory = info.m_dispatcher1->allocateCollisionAlgorithm(sizeof(CylinderCylinderAlgorithm));
+      return new (memory) CylinderCylinderAlgorithm(info, body0, body1, general);
+    }
+    btCollisionAlgorithmCreateFunc* general;
+  };
+
+ private:
+  struct Cylinder {
+    btVector3 centre, axis;
+    btScalar half_length, radius;
+  };
+  static Cylinder describe(const btCollisionObjectWrapper* wrap) {
+    const auto* shape = static_cast<const btCylinderShape*>(wrap->getCollisionShape());
+    const btTransform& pose = wrap->getWorldTransform();
+    const int up = shape->getUpAxis();
+    return {pose.getOrigin(), pose.getBasis().getColumn(up), shape->getHalfExtentsWithMargin()[up],
+            shape->getRadius()};
+  }
+
+  // Whether `upper` rests on `lower`'s end cap: their axes within 30 degrees, and pushing upper
+  // out along lower's axis is shorter than pushing it out sideways (the separating axis test
+  // between the two directions). If so, the contacts between the facing caps go to the result.
+  bool capOnCap(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
+                btManifoldResult* result) {
+    const Cylinder c0 = describe(body0), c1 = describe(body1);
+    if (std::abs(c0.axis.dot(c1.axis)) < btScalar(0.866)) return false;
+    // Lower: whichever has the other's centre beyond its end cap.
+    for (bool body1_lower : {true, false}) {
+      const Cylinder& lower = body1_lower ? c1 : c0;
+      const Cylinder& upper = body1_lower ? c0 : c1;
+      const btVector3 offset = upper.centre - lower.centre;
+      const btVector3 n = offset.dot(lower.axis) >= 0 ? lower.axis : -lower.axis;  // lower's cap, outwards
+      const btVector3 cap = lower.centre + lower.half_length * n;
+      if (n.dot(upper.centre - cap) <= 0) continue;
+      // Upper's cap that faces lower, and its rim's deepest point below lower's cap plane.
+      const btVector3 m = upper.axis.dot(n) > 0 ? upper.axis : -upper.axis;  // upper's axis, away from lower
+      const btVector3 upper_cap = upper.centre - upper.half_length * m;
+      btVector3 tilt = n - n.dot(m) * m;  // in upper's cap plane, along lower's normal
+      const btScalar tilt_length = tilt.length();
+      const btScalar depth_along_axis =
+          -n.dot(upper_cap - cap) + (tilt_length > SIMD_EPSILON ? upper.radius * tilt_length : 0);
+      const btVector3 to_axis = (upper.centre - lower.centre) - offset.dot(n) * n;
+      const btScalar sideways = lower.radius + upper.radius - to_axis.length();
+      if (sideways <= 0 || depth_along_axis >= sideways) return false;
+      addCapContacts(lower, upper, n, cap, m, upper_cap, body1_lower, result);
+      return true;
+    }
+    return false;
+  }
+
+  // Points of each cap's rim that lie over the other cap, paired with where they meet the other
+  // cap's plane along lower's normal n. Manifold point reduction keeps four of them, deepest first.
+  void addCapContacts(const Cylinder& lower, const Cylinder& upper, const btVector3& n, const btVector3& cap,
+                      const btVector3& m, const btVector3& upper_cap, bool body1_lower, btManifoldResult* result) {
+    result->setPersistentManifold(manifold_);
+    const FrictionAnchors anchors(manifold_);
+    const btScalar threshold = manifold_->getContactBreakingThreshold();
+    constexpr btScalar kRimTolerance = 1e-4;  // m: equal coaxial rims count as over each other
+    // Bullet's convention: the normal points from body1 to body0 and the point is on body1.
+    auto add = [&](const btVector3& on_lower, const btVector3& on_upper, btScalar distance) {
+      if (distance >= threshold) return;
+      if (body1_lower) result->addContactPoint(n, on_lower, distance);
+      else result->addContactPoint(-n, on_upper, distance);
+    };
+    constexpr int kRimPoints = 8;
+    btVector3 u1, u2, l1, l2;
+    btPlaneSpace1(m, u1, u2);
+    btPlaneSpace1(n, l1, l2);
+    for (int k = 0; k < kRimPoints; ++k) {
+      const btScalar angle = SIMD_2_PI * k / kRimPoints, c = btCos(angle), s = btSin(angle);
+      // Upper's rim onto lower's cap plane.
+      const btVector3 on_upper = upper_cap + upper.radius * (c * u1 + s * u2);
+      const btScalar distance = n.dot(on_upper - cap);
+      const btVector3 below = on_upper - distance * n;
+      if ((below - cap).length() <= lower.radius + kRimTolerance) add(below, on_upper, distance);
+      // Lower's rim up to upper's cap plane.
+      const btVector3 on_lower = cap + lower.radius * (c * l1 + s * l2);
+      const btScalar up = m.dot(upper_cap - on_lower) / m.dot(n);
+      const btVector3 above = on_lower + up * n;
+      if ((above - upper_cap).length() <= upper.radius + kRimTolerance) add(on_lower, above, up);
+    }
+    if (manifold_->getNumContacts()) result->refreshContactPoints();
+  }
+
+  btPersistentManifold* manifold_ = nullptr;
+  btCollisionAlgorithm* general_ = nullptr;
+};
+
 }  // namespace
 
 std::unique_ptr<btCollisionAlgorithmCreateFunc> makeCylinderPlaneAlgorithm(bool swapped) {
   auto f = std::make_unique<CylinderPlaneAlgorithm::CreateFunc>();
   f->m_swapped = swapped;
   return f;
+}
+
+std::unique_ptr<btCollisionAlgorithmCreateFunc> makeCylinderCylinderAlgorithm(
+    btCollisionAlgorithmCreateFunc* general) {
+  return std::make_unique<CylinderCylinderAlgorithm::CreateFunc>(general);
 }
 
 btTransform toBullet(const Eigen::Isometry3d& t) {

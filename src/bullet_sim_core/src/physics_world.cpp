@@ -135,6 +135,10 @@ PhysicsWorld::PhysicsWorld(const PhysicsSettings& settings)
   gCalculateCombinedFrictionCallback = &minimumFriction;
   dispatcher_->registerCollisionCreateFunc(CYLINDER_SHAPE_PROXYTYPE, STATIC_PLANE_PROXYTYPE, cylinder_plane_.get());
   dispatcher_->registerCollisionCreateFunc(STATIC_PLANE_PROXYTYPE, CYLINDER_SHAPE_PROXYTYPE, plane_cylinder_.get());
+  cylinder_cylinder_ = makeCylinderCylinderAlgorithm(
+      collision_config_->getCollisionAlgorithmCreateFunc(CYLINDER_SHAPE_PROXYTYPE, CYLINDER_SHAPE_PROXYTYPE));
+  dispatcher_->registerCollisionCreateFunc(CYLINDER_SHAPE_PROXYTYPE, CYLINDER_SHAPE_PROXYTYPE,
+                                           cylinder_cylinder_.get());
   setSettings(settings);
 }
 

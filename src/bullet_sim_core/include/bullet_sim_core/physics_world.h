@@ -53,6 +53,7 @@ class PhysicsWorld {
   double time_ = 0.0;
   std::unique_ptr<btDefaultCollisionConfiguration> collision_config_;
   std::unique_ptr<btCollisionAlgorithmCreateFunc> cylinder_plane_, plane_cylinder_;  // outlive the dispatcher
+  std::unique_ptr<btCollisionAlgorithmCreateFunc> cylinder_cylinder_;
   std::unique_ptr<btCollisionDispatcher> dispatcher_;
   std::unique_ptr<btDbvtBroadphase> broadphase_;
   std::unique_ptr<btMultiBodyConstraintSolver> solver_;  // friction along the slip: see physics_world.cpp
