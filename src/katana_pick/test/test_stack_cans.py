@@ -5,26 +5,17 @@ open, and the three cans end up as one upright tower on the middle can, which st
 Ground truth from /gazebo/get_model_state."""
 import math
 import sys
-import time
 import unittest
 
-import rosnode
 import rospy
 import rostest
 from gazebo_grasp_plugin_ros.msg import GazeboGraspEvent
-from geometry_msgs.msg import PoseArray
 
-from bullet_sim_testing.gazebo import Gazebo, set_real_time_factor
+from bullet_sim_testing.gazebo import Gazebo
+from stack_cans_run import CAN_HEIGHT, TABLE, run_until_stack_cans_exits, tilt, wait_for_cans
 
-TABLE = 0.4         # katana_arm.launch's table_height: the arm's base and the cans stand on it
-CAN_HEIGHT = 0.12
 CANS = ['can_1', 'can_2', 'can_3']  # at (0.31, -0.18), (0.38, 0.0), (0.31, 0.18): can_2 is the middle one
 TOWER = 'can_2'
-
-
-def tilt(orientation):
-    """The angle between the can's axis and the vertical (rad)."""
-    return 2 * math.asin(min(1.0, math.hypot(orientation.x, orientation.y)))
 
 
 class StackCansTest(unittest.TestCase):
@@ -34,21 +25,8 @@ class StackCansTest(unittest.TestCase):
         cls.events = []
         rospy.Subscriber('/gazebo/grasp_events', GazeboGraspEvent, cls.events.append)
         cls.gazebo = Gazebo()
-        cls.detected = None
-        deadline = time.monotonic() + 60
-        # Bring-up at the world's own pace; then as fast as it goes.
-        while time.monotonic() < deadline and cls.detected is None:
-            try:
-                cls.detected = rospy.wait_for_message('/stack_cans/cans', PoseArray, 0.5)
-            except rospy.ROSException:
-                pass
-        assert cls.detected is not None, 'stack_cans published no cans within 60 s'
-        set_real_time_factor(0.0)
-        cls.start_sim = rospy.Time.now().to_sec()
-        while time.monotonic() < deadline + 180 and '/stack_cans' in rosnode.get_node_names():
-            time.sleep(0.5)
-        cls.sim_seconds = rospy.Time.now().to_sec() - cls.start_sim
-        cls.finished = '/stack_cans' not in rosnode.get_node_names()
+        cls.detected = wait_for_cans()
+        cls.finished, cls.sim_seconds = run_until_stack_cans_exits()
 
     def truth(self, name):
         state = self.gazebo.state(name)

@@ -5,25 +5,17 @@ grip can_3, backs off, looks again, reports it gone, and still puts can_1 on the
 can_4 is never touched. Ground truth from /gazebo/get_model_state, the reports from /rosout."""
 import math
 import sys
-import time
 import unittest
 
-import rosnode
 import rospy
 import rostest
 from gazebo_grasp_plugin_ros.msg import GazeboGraspEvent
-from geometry_msgs.msg import PoseArray
 from rosgraph_msgs.msg import Log
 
-from bullet_sim_testing.gazebo import Gazebo, set_real_time_factor
+from bullet_sim_testing.gazebo import Gazebo
+from stack_cans_run import CAN_HEIGHT, TABLE, run_until_stack_cans_exits, tilt, wait_for_cans
 
-TABLE = 0.4
-CAN_HEIGHT = 0.12
 LAYOUT = {'can_1': (0.31, -0.18), 'can_2': (0.38, 0.0), 'can_3': (0.31, 0.18), 'can_4': (0.45, -0.45)}
-
-
-def tilt(orientation):
-    return 2 * math.asin(min(1.0, math.hypot(orientation.x, orientation.y)))
 
 
 class StackCansFaultsTest(unittest.TestCase):
@@ -34,19 +26,9 @@ class StackCansFaultsTest(unittest.TestCase):
         rospy.Subscriber('/gazebo/grasp_events', GazeboGraspEvent, cls.events.append)
         rospy.Subscriber('/rosout', Log, lambda m: m.name == '/stack_cans' and cls.reports.append(m.msg))
         cls.gazebo = Gazebo()
-        cls.detected = None
-        deadline = time.monotonic() + 60
-        while time.monotonic() < deadline and cls.detected is None:
-            try:
-                cls.detected = rospy.wait_for_message('/stack_cans/cans', PoseArray, 0.5)
-            except rospy.ROSException:
-                pass
-        assert cls.detected is not None, 'stack_cans published no cans within 60 s'
+        cls.detected = wait_for_cans()
         cls.deleted = cls.gazebo.delete_model(model_name='can_3').success
-        set_real_time_factor(0.0)
-        while time.monotonic() < deadline + 180 and '/stack_cans' in rosnode.get_node_names():
-            time.sleep(0.5)
-        cls.finished = '/stack_cans' not in rosnode.get_node_names()
+        cls.finished, _ = run_until_stack_cans_exits()
 
     def truth(self, name):
         state = self.gazebo.state(name)

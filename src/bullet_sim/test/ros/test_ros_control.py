@@ -6,7 +6,6 @@ import math
 import os
 import signal
 import subprocess
-import time
 import unittest
 
 import actionlib
@@ -22,18 +21,10 @@ from std_msgs.msg import Float64, Float64MultiArray
 from trajectory_msgs.msg import JointTrajectoryPoint
 
 from bullet_sim_testing.gazebo import Gazebo
+from bullet_sim_testing.waiting import wait_until
 
 STRICT = 2
 CM = '/rig/controller_manager/'
-
-
-def wait_until(condition, timeout, step=0.05):
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        if condition():
-            return True
-        time.sleep(step)
-    return condition()
 
 
 class RosControlTest(unittest.TestCase):

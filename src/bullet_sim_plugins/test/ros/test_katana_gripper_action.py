@@ -7,7 +7,6 @@ are; /gripper_grasp_status agrees with /joint_states (which joint_state_controll
 through the transmissions); fingers closing on a block stop there and the goal ends as stalled,
 and they open again at once."""
 import threading
-import time
 import unittest
 
 import actionlib
@@ -19,6 +18,8 @@ from control_msgs.srv import QueryTrajectoryState
 from gazebo_msgs.srv import DeleteModel, GetPhysicsProperties, SetPhysicsProperties, SpawnModel
 from geometry_msgs.msg import Pose
 from sensor_msgs.msg import JointState
+
+from bullet_sim_testing.waiting import wait_until
 
 ACTION = '/gripper_grasp_posture_controller'
 STATUS = '/gripper_grasp_status'
@@ -36,15 +37,6 @@ BLOCK = """<?xml version="1.0"?><sdf version="1.6"><model name="block"><static>t
 <link name="body"><collision name="c"><geometry><box><size>0.03 0.03 0.03</size></box></geometry></collision>
 </link></model></sdf>"""
 BLOCK_AT = (0.47, 0.0, 0.2015)
-
-
-def wait_until(condition, timeout, step=0.05):
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        if condition():
-            return True
-        time.sleep(step)
-    return condition()
 
 
 class KatanaGripperActionTest(unittest.TestCase):
