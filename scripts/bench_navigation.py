@@ -4,6 +4,7 @@ navigation bring-up (simulator, mapper, move_base), headless and unthrottled on 
 drives to seeded random reachable goals one after the other.
 
   bench_navigation.py [--robot m_robot|pioneer] [--goals N] [--seed S] [--rtf F | --realtime]
+                      [--cpu] [--trace CSV]
 
   m_robot  find_frontier m_robot_navigation.launch (navfn + DWAPlannerROS) in the Capstone maze
   pioneer  pioneer_2dnav pioneer_navigation.launch (navfn + TrajectoryPlannerROS) in its 8 x 8 m maze
@@ -21,6 +22,8 @@ The real-time factor is sim time over wall time from the first goal to the last.
 Output lines (one per robot):
   navigation (<robot>): N goals, S succeeded (P %), C wall contacts, time/lower bound median M
   (worst W), real-time factor R (sim T s in wall U s)
+and with --cpu each process's CPU time over the same span, in % of one core (this benchmark's own
+process included: it checks the outline against the walls every 10 ms of sim time).
 """
 import argparse
 import heapq
@@ -37,6 +40,7 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(ROOT, 'src', 'bullet_sim_testing', 'src'))
 from bench_node_rtf import (each_robot_in_its_own_process, launch_on_private_master,  # noqa: E402
                             rosgraph_service_up, run_with_processes, set_real_time_factor, wait_until)
+from process_cpu import ProcessCpu  # noqa: E402
 from bullet_sim_testing.mobile import yaw_of  # noqa: E402
 from bullet_sim_testing.navigation import outline, touches_a_wall  # noqa: E402
 from bullet_sim_testing.walls import load_walls  # noqa: E402
@@ -114,8 +118,25 @@ class Truth:
         self.points = outline(length, width, centre_x=centre_x)
         self.lock = threading.Lock()
         self.pose, self.last_check, self.contacts = None, -1.0, 0
-        self.goal, self.trace = 0, []  # (goal number, sim time, x, y, yaw) every 0.25 s, for --trace
+        # (goal number, sim time, x, y, yaw, then the mapper's last pose: its stamp, x, y, yaw in the
+        # world) every 0.25 s, for --trace. The mapper's pose is as old as its stamp says.
+        self.goal, self.trace = 0, []
+        self.mapped = (math.nan, math.nan, math.nan, math.nan)
         self.sub = rospy.Subscriber('/gazebo/model_states', ModelStates, self.on_states, queue_size=1)
+
+    def follow_mapper(self, spawn):
+        """Also trace the mapper's pose (slam_out_pose, in the map frame that starts at `spawn`)."""
+        import rospy
+        from geometry_msgs.msg import PoseStamped
+        sx, sy, syaw = spawn
+
+        def on_pose(msg):
+            p = msg.pose.position
+            x = sx + math.cos(syaw) * p.x - math.sin(syaw) * p.y
+            y = sy + math.sin(syaw) * p.x + math.cos(syaw) * p.y
+            with self.lock:
+                self.mapped = (msg.header.stamp.to_sec(), x, y, syaw + yaw_of(msg.pose.orientation))
+        self.pose_sub = rospy.Subscriber('/slam_out_pose', PoseStamped, on_pose, queue_size=1)
 
     def on_states(self, msg):
         import rospy
@@ -127,7 +148,7 @@ class Truth:
         with self.lock:
             self.pose = (p.position.x, p.position.y, yaw)
             if not self.trace or now - self.trace[-1][1] >= 0.25:
-                self.trace.append((self.goal, now, p.position.x, p.position.y, yaw))
+                self.trace.append((self.goal, now, p.position.x, p.position.y, yaw) + self.mapped)
             if now - self.last_check < 0.01:
                 return
             self.last_check = now
@@ -136,7 +157,7 @@ class Truth:
                 self.contacts += 1
 
 
-def bench(name, goals, seed, rtf, procs, trace_file=None):
+def bench(name, goals, seed, rtf, procs, trace_file=None, cpu=False):
     import actionlib
     import rospy
     from actionlib_msgs.msg import GoalStatus
@@ -157,12 +178,15 @@ def bench(name, goals, seed, rtf, procs, trace_file=None):
     client = actionlib.SimpleActionClient('move_base', MoveBaseAction)
     wait_until(lambda: client.wait_for_server(rospy.Duration(1.0)), 120, 'move_base', procs)
     truth = Truth(robot['model'], walls, robot['outline'])
+    if trace_file:
+        truth.follow_mapper(robot['spawn'])
     wait_until(lambda: truth.pose is not None, 30, '/gazebo/model_states', procs)
     if rtf != 1.0:
         set_real_time_factor(rtf)
 
     results = []  # (succeeded, sim seconds, lower bound seconds)
     wall_start, sim_start = time.monotonic(), rospy.get_time()
+    cpu_use = ProcessCpu(procs.log_dir) if cpu else None
     contacts_start = truth.contacts
     for k in range(goals):
         with truth.lock:
@@ -209,8 +233,8 @@ def bench(name, goals, seed, rtf, procs, trace_file=None):
     sim = rospy.get_time() - sim_start
     if trace_file:
         with open(trace_file, 'w') as f, truth.lock:
-            f.write('goal,t,x,y,yaw\n')
-            f.writelines('%d,%.2f,%.3f,%.3f,%.3f\n' % row for row in truth.trace)
+            f.write('goal,t,x,y,yaw,mapped_t,mapped_x,mapped_y,mapped_yaw\n')
+            f.writelines('%d,%.2f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n' % row for row in truth.trace)
     succeeded = sum(1 for r in results if r[0])
     ratios = sorted(t / b for ok, t, b in results if ok and b > 0)
     median = ratios[len(ratios) // 2] if ratios else float('nan')
@@ -219,6 +243,8 @@ def bench(name, goals, seed, rtf, procs, trace_file=None):
           '(worst %.2f), real-time factor %.2f (sim %.0f s in wall %.0f s)' % (
               name, goals, succeeded, 100.0 * succeeded / goals, truth.contacts - contacts_start, median, worst,
               sim / wall, sim, wall), flush=True)
+    if cpu_use:
+        print('cpu (%s), %% of one core from the first goal to the last: %s' % (name, cpu_use.report()), flush=True)
 
 
 def main():
@@ -229,16 +255,17 @@ def main():
     parser.add_argument('--rtf', type=float, default=0.0,
                         help='the simulator\'s target real-time factor (default 0: as fast as it goes)')
     parser.add_argument('--realtime', action='store_true', help='the same as --rtf 1')
-    parser.add_argument('--trace', metavar='CSV', help='write the true pose every 0.25 s of sim time (one robot)')
+    parser.add_argument('--cpu', action='store_true', help='print each process\'s CPU use (one robot)')
+    parser.add_argument('--trace', metavar='CSV', help='write the true pose and the mapper\'s every 0.25 s of sim time (one robot)')
     args = parser.parse_args()
     rtf = 1.0 if args.realtime else args.rtf
     if not args.robot:
         extra = ['--goals', str(args.goals), '--seed', str(args.seed), '--rtf', str(rtf)]
         return each_robot_in_its_own_process(__file__, sorted(ROBOTS), extra)
-    print('command: scripts/bench_navigation.py --robot %s --goals %d --seed %d --rtf %g' % (
-        args.robot, args.goals, args.seed, rtf), flush=True)
+    print('command: scripts/bench_navigation.py --robot %s --goals %d --seed %d --rtf %g%s' % (
+        args.robot, args.goals, args.seed, rtf, ' --cpu' if args.cpu else ''), flush=True)
     return run_with_processes('bench_navigation', lambda procs: bench(args.robot, args.goals, args.seed, rtf, procs,
-                                                                     args.trace))
+                                                                     args.trace, args.cpu))
 
 
 if __name__ == '__main__':
