@@ -256,7 +256,8 @@ def main():
                         help='the simulator\'s target real-time factor (default 0: as fast as it goes)')
     parser.add_argument('--realtime', action='store_true', help='the same as --rtf 1')
     parser.add_argument('--cpu', action='store_true', help='print each process\'s CPU use (one robot)')
-    parser.add_argument('--trace', metavar='CSV', help='write the true pose and the mapper\'s every 0.25 s of sim time (one robot)')
+    parser.add_argument('--trace', metavar='CSV',
+                        help='write the true pose and the mapper\'s every 0.25 s of sim time (one robot)')
     args = parser.parse_args()
     rtf = 1.0 if args.realtime else args.rtf
     if not args.robot:
