@@ -13,6 +13,12 @@ import os
 TICKS = os.sysconf('SC_CLK_TCK')
 
 
+def _uptime():
+    """Seconds since boot: the wall clock the CPU times are measured against."""
+    with open('/proc/uptime') as f:
+        return float(f.read().split()[0])
+
+
 def _cpu_seconds(pid):
     """User + system CPU seconds of `pid` (its threads included), or None when it is gone."""
     try:
@@ -77,7 +83,3 @@ class ProcessCpu:
         return '%s (total %.1f %% of %d cores)' % (
             ', '.join('%s %.1f %%' % (n, p) for n, p in rows if p >= 0.5), total, os.cpu_count() or 1)
 
-
-def _uptime():
-    with open('/proc/uptime') as f:
-        return float(f.read().split()[0])
