@@ -1,11 +1,12 @@
 """What a mapping rostest checks, as a unittest mixin (needs a ROS master, the simulator and the mapper).
 
 The robot drives a scripted path through its maze, steered by a waypoint follower on ground truth
-(/gazebo/get_model_state, whose answers carry the sim time); the mapper sees only the laser. Once,
-in setUpClass, the run is driven and recorded; the tests then compare the mapper's poses
-(slam_out_pose) with the ground truth at their stamps, in the map frame (the robot's pose when the
-mapper started: it is at rest until the run begins), and score the map that save_map writes against
-the maze's walls.
+(/gazebo/get_model_state, whose answers carry the sim time); the mapper sees only the laser (and,
+for slam_gmapping, the odometry). Once, in setUpClass, the run is driven and recorded; the tests then
+compare the mapper's poses (slam_out_pose, or tf map -> base frame for a mapper without that topic)
+with the ground truth at their stamps, in the map frame (by default the robot's pose when the mapper
+started: it is at rest until the run begins), and score the map that save_map writes against the
+maze's walls.
 """
 import math
 import os
@@ -65,6 +66,13 @@ class MappingRunChecks:
     MIN_PRECISION = 0.9      # share of the map's occupied cells within 0.1 m of a wall
     MIN_COVERAGE = 0.8       # share of the visible wall faces with an occupied cell within 0.1 m
     RUN_TIMEOUT = 400.0      # s of sim time for the whole path
+    # Where the mapper's poses come from: its slam_out_pose topic, or (POSE_TOPIC None) tf from
+    # TF_POSE[0] to TF_POSE[1], sampled at 20 Hz of sim time.
+    POSE_TOPIC = '/slam_out_pose'
+    TF_POSE = ('map', 'base_link')
+    # The map frame in the world: None for the robot's pose at the start (hector_mapping), else
+    # (x, y, yaw) (slam_gmapping's map is its odom frame, the world for odometrySource world).
+    MAP_IN_WORLD = None
 
     @classmethod
     def setUpClass(cls):
@@ -73,12 +81,19 @@ class MappingRunChecks:
         cls.get_state = rospy.ServiceProxy('/gazebo/get_model_state', GetModelState, persistent=True)
         cls.cmd = rospy.Publisher(cls.CMD_VEL, Twist, queue_size=1)
         cls.slam_poses, cls.lock = [], threading.Lock()
-        rospy.Subscriber('/slam_out_pose', PoseStamped, cls._on_pose, queue_size=100)
+        if cls.POSE_TOPIC:
+            rospy.Subscriber(cls.POSE_TOPIC, PoseStamped, cls._on_pose, queue_size=100)
+        else:
+            import tf2_ros
+            cls.tf_buffer = tf2_ros.Buffer()
+            cls.tf_listener = tf2_ros.TransformListener(cls.tf_buffer)
+            cls.tf_timer = rospy.Timer(rospy.Duration(0.05), cls._sample_tf)
         cls.truth = []
         deadline = rospy.get_time() + 60
         while not cls._have_slam_pose() and rospy.get_time() < deadline:
             rospy.sleep(0.1)
-        cls.start = cls._truth_sample()[1:]  # at rest: where the map frame is
+        # At rest: where the map frame is, unless the mapper's map frame is a fixed one.
+        cls.start = cls._truth_sample()[1:] if cls.MAP_IN_WORLD is None else tuple(cls.MAP_IN_WORLD)
         cls.waypoints, speed, max_turn = load_tour(cls.TOUR)
         cls.reached = follow_waypoints(cls._truth_sample, cls.cmd, cls.waypoints, speed, max_turn, cls.RUN_TIMEOUT)
         rospy.sleep(1.5)                      # stop, and let the mapper see the robot at rest
@@ -94,6 +109,20 @@ class MappingRunChecks:
         with cls.lock:
             cls.slam_poses.append((msg.header.stamp.to_sec(), msg.pose.position.x, msg.pose.position.y,
                                    yaw_of(msg.pose.orientation)))
+
+    @classmethod
+    def _sample_tf(cls, _event):
+        import tf2_ros
+        try:
+            t = cls.tf_buffer.lookup_transform(cls.TF_POSE[0], cls.TF_POSE[1], rospy.Time(0))
+        except (tf2_ros.LookupException, tf2_ros.ConnectivityException, tf2_ros.ExtrapolationException):
+            return
+        with cls.lock:
+            stamp = t.header.stamp.to_sec()
+            if cls.slam_poses and stamp <= cls.slam_poses[-1][0]:
+                return
+            cls.slam_poses.append((stamp, t.transform.translation.x, t.transform.translation.y,
+                                   yaw_of(t.transform.rotation)))
 
     @classmethod
     def _have_slam_pose(cls):

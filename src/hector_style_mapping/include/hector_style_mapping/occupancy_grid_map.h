@@ -39,7 +39,13 @@ class OccupancyGridMap {
   // "free" update, the end cell one "occupied" update. No cell is updated twice by one scan: an occupied mark wins
   // over a free one. Rays are clipped to the map: the part inside is traced, an end point outside marks nothing
   // occupied. A ray whose end lies in the laser's own cell marks that cell occupied. Non-finite points are skipped.
+  // The scan's free_rays are traced the same way, their end cells marked free.
   void updateByScan(const ScanPoints& scan, const Pose2D& pose);
+
+  // The cells the last updateByScan() changed (row-major indices), and whether it marked a cell occupied (else
+  // free): for counts kept beside the map (slam_gmapping's hits per visit). Empty after clear().
+  const std::vector<int>& lastUpdatedCells() const { return marked_cells_; }
+  bool lastUpdateMarkedOccupied(int index) const { return stamp_[index] == occupied_stamp_ - 2u; }
 
   // Bilinear interpolation of the occupancy probability at map-frame point `p` between the four surrounding cell
   // centres, and (if asked) its gradient in 1/m (d/dx, d/dy in the map frame). Unknown cells, and the cells one
@@ -78,7 +84,7 @@ class OccupancyGridMap {
 
  private:
   // Marks the cells of one ray for this scan's update (see updateByScan). Cells are continuous cell coordinates.
-  void markRay(const Eigen::Vector2d& start, const Eigen::Vector2d& end);
+  void markRay(const Eigen::Vector2d& start, const Eigen::Vector2d& end, bool end_is_hit);
   // Marks the Bresenham line from cell (x0, y0) to cell (x1, y1), both inside the map, as free; the last cell is
   // marked occupied instead if `end_is_hit`.
   void markLine(int x0, int y0, int x1, int y1, bool end_is_hit);
@@ -103,7 +109,8 @@ class OccupancyGridMap {
   std::vector<std::uint32_t> stamp_;
   std::uint32_t free_stamp_ = 1;
   std::uint32_t occupied_stamp_ = 2;
-  // Cells marked by the scan being applied; kept between scans so updates do not allocate once it has grown.
+  // Cells marked by the scan being applied (or the last one applied); kept between scans so updates do not
+  // allocate once it has grown.
   std::vector<int> marked_cells_;
 };
 

@@ -12,6 +12,9 @@ namespace hector_style_mapping {
 struct ScanPoints {
   Eigen::Vector2d origin{0.0, 0.0};      // the laser's position in the base frame; every ray starts here
   std::vector<Eigen::Vector2d> points;   // beam end points in the base frame, metres
+  // Beams longer than the caller trusts (gmapping's maxUrange), cut to that length: the map update
+  // clears the cells on the way and marks no end; the matchers do not read them.
+  std::vector<Eigen::Vector2d> free_rays;
 };
 
 }  // namespace hector_style_mapping

@@ -108,6 +108,10 @@ class SlamProcessor {
   int search_win_count_ = 0;
 };
 
+// SlamProcessor::covariance()'s formula for a match and the surface-normal Hessian at its pose; for other
+// front ends on the same matcher.
+Eigen::Matrix3d matchCovariance(const ScanMatchResult& match, const Eigen::Matrix3d& surface_normal_hessian);
+
 }  // namespace hector_style_mapping
 
 #endif  // HECTOR_STYLE_MAPPING_SLAM_PROCESSOR_H

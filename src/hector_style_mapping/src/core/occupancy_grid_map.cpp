@@ -51,6 +51,7 @@ void OccupancyGridMap::clear() {
   std::fill(log_odds_.begin(), log_odds_.end(), 0.0f);
   std::fill(match_value_.begin(), match_value_.end(), 0.0f);
   std::fill(stamp_.begin(), stamp_.end(), 0u);
+  marked_cells_.clear();
   free_stamp_ = 1;
   occupied_stamp_ = 2;
 }
@@ -74,16 +75,19 @@ void OccupancyGridMap::updateByScan(const ScanPoints& scan, const Pose2D& pose) 
     return (map_point - origin_) * inverse_resolution_;
   };
 
+  marked_cells_.clear();
   const Eigen::Vector2d start = toCellCoordinates(scan.origin);
   if (!start.allFinite()) {
     return;
   }
-  marked_cells_.clear();
   for (const Eigen::Vector2d& point : scan.points) {
     if (!point.allFinite()) {
       continue;
     }
-    markRay(start, toCellCoordinates(point));
+    markRay(start, toCellCoordinates(point), true);
+  }
+  for (const Eigen::Vector2d& point : scan.free_rays) {
+    if (point.allFinite()) markRay(start, toCellCoordinates(point), false);
   }
 
   // Applied only now that the scan is fully marked, so an occupied mark that overrides an earlier free mark of the
@@ -94,19 +98,18 @@ void OccupancyGridMap::updateByScan(const ScanPoints& scan, const Pose2D& pose) 
     log_odds_[index] = log_odds;
     match_value_[index] = probabilityOf(log_odds);
   }
-  marked_cells_.clear();
   free_stamp_ += 2;
   occupied_stamp_ += 2;
 }
 
-void OccupancyGridMap::markRay(const Eigen::Vector2d& start, const Eigen::Vector2d& end) {
+void OccupancyGridMap::markRay(const Eigen::Vector2d& start, const Eigen::Vector2d& end, bool end_is_hit) {
   const double size_x = size_x_;
   const double size_y = size_y_;
   const bool start_inside = insideHalfOpen(start.x(), size_x) && insideHalfOpen(start.y(), size_y);
   const bool end_inside = insideHalfOpen(end.x(), size_x) && insideHalfOpen(end.y(), size_y);
   if (start_inside && end_inside) {
     markLine(static_cast<int>(start.x()), static_cast<int>(start.y()), static_cast<int>(end.x()),
-             static_cast<int>(end.y()), true);
+             static_cast<int>(end.y()), end_is_hit);
     return;
   }
 
@@ -143,7 +146,7 @@ void OccupancyGridMap::markRay(const Eigen::Vector2d& start, const Eigen::Vector
     return static_cast<int>(std::clamp(std::floor(coordinate), 0.0, static_cast<double>(size - 1)));
   };
   markLine(cellIndex(first.x(), size_x_), cellIndex(first.y(), size_y_), cellIndex(last.x(), size_x_),
-           cellIndex(last.y(), size_y_), end_inside);
+           cellIndex(last.y(), size_y_), end_inside && end_is_hit);
 }
 
 void OccupancyGridMap::markLine(int x0, int y0, int x1, int y1, bool end_is_hit) {

@@ -16,7 +16,9 @@ bool hasFinitePoint(const ScanPoints& scan) {
                      [](const Eigen::Vector2d& point) { return point.allFinite(); });
 }
 
-Eigen::Matrix3d covarianceFrom(const ScanMatchResult& match, const Eigen::Matrix3d& hessian) {
+}  // namespace
+
+Eigen::Matrix3d matchCovariance(const ScanMatchResult& match, const Eigen::Matrix3d& hessian) {
   const Eigen::Vector3d prior_information(1.0 / SlamProcessor::kUnconstrainedTranslationVariance,
                                           1.0 / SlamProcessor::kUnconstrainedTranslationVariance,
                                           1.0 / SlamProcessor::kUnconstrainedRotationVariance);
@@ -26,8 +28,6 @@ Eigen::Matrix3d covarianceFrom(const ScanMatchResult& match, const Eigen::Matrix
   // Exactly symmetric, whatever the rounding of the inverse.
   return 0.5 * (covariance + covariance.transpose());
 }
-
-}  // namespace
 
 SlamProcessor::SlamProcessor(const MapperOptions& options) : options_(options), map_(options) {}
 
@@ -98,7 +98,7 @@ void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double s
     last_motion_ = between(previous, pose_);
     last_motion_seconds_ = dt;
   }
-  covariance_ = covarianceFrom(last_match_, matcher_.surfaceNormalHessian(map_.finest(), scan, pose_));
+  covariance_ = matchCovariance(last_match_, matcher_.surfaceNormalHessian(map_.finest(), scan, pose_));
 
   map_updated_by_last_scan_ = map_update_count_ == 0 || movedEnoughForMapUpdate();
   if (map_updated_by_last_scan_) {

@@ -5,81 +5,14 @@
 #include <sstream>
 
 #include <ros/console.h>
-#include <xmlrpcpp/XmlRpcValue.h>
+
+#include "hector_style_mapping/ros/parameter_reader.h"
 
 namespace hector_style_mapping {
 namespace {
 
 // hector_mapping parameters that are accepted and ignored: debugging aids of upstream's.
 const char* const kIgnoredParameters[] = {"pub_drawings", "pub_debug_output"};
-
-const char* typeName(const XmlRpc::XmlRpcValue& value) {
-  switch (value.getType()) {
-    case XmlRpc::XmlRpcValue::TypeBoolean: return "a bool";
-    case XmlRpc::XmlRpcValue::TypeInt: return "an int";
-    case XmlRpc::XmlRpcValue::TypeDouble: return "a double";
-    case XmlRpc::XmlRpcValue::TypeString: return "a string";
-    case XmlRpc::XmlRpcValue::TypeArray: return "a list";
-    case XmlRpc::XmlRpcValue::TypeStruct: return "a dictionary";
-    default: return "something else";
-  }
-}
-
-// Reads typed private parameters, keeping their names (for unknownParameters) and the problems found.
-class ParameterReader {
- public:
-  explicit ParameterReader(const ros::NodeHandle& nh) : nh_(nh) {}
-
-  void read(const std::string& name, double* value) {
-    XmlRpc::XmlRpcValue raw;
-    if (!fetch(name, &raw)) return;
-    if (raw.getType() == XmlRpc::XmlRpcValue::TypeDouble) *value = static_cast<double>(raw);
-    else if (raw.getType() == XmlRpc::XmlRpcValue::TypeInt) *value = static_cast<int>(raw);
-    else wrongType(name, "a number", raw);
-  }
-  void read(const std::string& name, int* value) {
-    XmlRpc::XmlRpcValue raw;
-    if (!fetch(name, &raw)) return;
-    if (raw.getType() == XmlRpc::XmlRpcValue::TypeInt) {
-      *value = static_cast<int>(raw);
-    } else if (raw.getType() == XmlRpc::XmlRpcValue::TypeDouble &&
-               static_cast<double>(raw) == std::floor(static_cast<double>(raw))) {
-      *value = static_cast<int>(static_cast<double>(raw));  // 200.0 is taken as 200
-    } else {
-      wrongType(name, "an integer", raw);
-    }
-  }
-  void read(const std::string& name, bool* value) {
-    XmlRpc::XmlRpcValue raw;
-    if (!fetch(name, &raw)) return;
-    if (raw.getType() == XmlRpc::XmlRpcValue::TypeBoolean) *value = static_cast<bool>(raw);
-    else wrongType(name, "true or false", raw);
-  }
-  void read(const std::string& name, std::string* value) {
-    XmlRpc::XmlRpcValue raw;
-    if (!fetch(name, &raw)) return;
-    if (raw.getType() == XmlRpc::XmlRpcValue::TypeString) *value = static_cast<std::string>(raw);
-    else wrongType(name, "a string", raw);
-  }
-
-  const std::vector<std::string>& names() const { return names_; }
-  std::string problems() const { return problems_.str(); }
-  void problem(const std::string& text) { problems_ << text << "\n"; }
-
- private:
-  bool fetch(const std::string& name, XmlRpc::XmlRpcValue* raw) {
-    names_.push_back(name);
-    return nh_.getParam(name, *raw);
-  }
-  void wrongType(const std::string& name, const char* expected, XmlRpc::XmlRpcValue& raw) {
-    problems_ << nh_.resolveName(name) << ": expected " << expected << ", got " << typeName(raw) << " ("
-              << raw.toXml() << ")\n";
-  }
-
-  const ros::NodeHandle& nh_;
-  std::vector<std::string> names_;
-  std::ostringstream problems_;
-};
 
 // Reads every parameter into `o` (or, with o null, only records the names).
 void readAll(ParameterReader& r, NodeOptions* o) {
@@ -153,16 +86,7 @@ std::vector<std::string> unknownParameters(const ros::NodeHandle& private_nh) {
   readAll(reader, &scratch);
   std::vector<std::string> known = reader.names();
   known.insert(known.end(), std::begin(kIgnoredParameters), std::end(kIgnoredParameters));
-  std::vector<std::string> all;
-  ros::NodeHandle("~").getParamNames(all);  // every parameter on the server
-  const std::string prefix = private_nh.getNamespace() + "/";
-  std::vector<std::string> unknown;
-  for (const std::string& name : all) {
-    if (name.compare(0, prefix.size(), prefix) != 0) continue;
-    const std::string local = name.substr(prefix.size());
-    if (std::find(known.begin(), known.end(), local) == known.end()) unknown.push_back(name);
-  }
-  return unknown;
+  return reader.unknown(known);
 }
 
 }  // namespace hector_style_mapping

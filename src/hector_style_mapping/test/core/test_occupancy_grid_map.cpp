@@ -234,6 +234,30 @@ TEST(OccupancyGridMap, OccupiedMarkWinsWhicheverRayComesFirst) {
   }
 }
 
+TEST(OccupancyGridMap, FreeRaysClearTheirWholeLengthAndMarkNoEnd) {
+  OccupancyGridMap map = smallMap();
+  ScanPoints scan = rays(map.cellCenter(20, 15), {map.cellCenter(20, 20)});
+  scan.free_rays = {map.cellCenter(26, 15), {kNan, 0.0}};
+  map.updateByScan(scan, Pose2D{});
+  EXPECT_EQ(updatedCells(map).size(), 12u);  // 6 of the hit's column, 6 of the free ray's row (one shared)
+  EXPECT_TRUE(map.isOccupied(20, 20));
+  for (int x = 21; x <= 26; ++x) EXPECT_TRUE(map.isFree(x, 15)) << x;
+  EXPECT_TRUE(map.isUnknown(27, 15));
+}
+
+TEST(OccupancyGridMap, LastUpdateListsItsCellsAndWhichWereHits) {
+  OccupancyGridMap map = smallMap();
+  map.updateByScan(rays(map.cellCenter(20, 15), {map.cellCenter(23, 15)}), Pose2D{});
+  map.updateByScan(rays(map.cellCenter(20, 15), {map.cellCenter(20, 17)}), Pose2D{});
+  std::map<std::pair<int, int>, bool> last;  // (x, y) -> marked occupied
+  for (const int index : map.lastUpdatedCells())
+    last[{index % map.sizeX(), index / map.sizeX()}] = map.lastUpdateMarkedOccupied(index);
+  const std::map<std::pair<int, int>, bool> expected{{{20, 15}, false}, {{20, 16}, false}, {{20, 17}, true}};
+  EXPECT_EQ(last, expected);
+  map.clear();
+  EXPECT_TRUE(map.lastUpdatedCells().empty());
+}
+
 TEST(OccupancyGridMap, ZeroLengthRayMarksItsCellOccupied) {
   OccupancyGridMap map = smallMap();
   map.updateByScan(rays({0.01, 0.02}, {{0.08, 0.07}}), Pose2D{});
