@@ -4,7 +4,7 @@ navigation bring-up (simulator, mapper, move_base), headless and unthrottled on 
 drives to seeded random reachable goals one after the other.
 
   bench_navigation.py [--robot m_robot|pioneer] [--goals N] [--seed S] [--rtf F | --realtime]
-                      [--cpu] [--trace CSV]
+                      [--mapper hector|gmapping] [--cpu] [--trace CSV]
 
   m_robot  find_frontier m_robot_navigation.launch (navfn + DWAPlannerROS) in the Capstone maze
   pioneer  pioneer_2dnav pioneer_navigation.launch (navfn + TrajectoryPlannerROS) in its 8 x 8 m maze
@@ -157,7 +157,7 @@ class Truth:
                 self.contacts += 1
 
 
-def bench(name, goals, seed, rtf, procs, trace_file=None, cpu=False):
+def bench(name, goals, seed, rtf, procs, trace_file=None, cpu=False, mapper='hector'):
     import actionlib
     import rospy
     from actionlib_msgs.msg import GoalStatus
@@ -166,12 +166,18 @@ def bench(name, goals, seed, rtf, procs, trace_file=None, cpu=False):
     robot = ROBOTS[name]
     walls = load_walls(robot['walls'])
     grid = MazeGrid(walls, robot['inscribed'])
-    sx, sy, syaw = robot['spawn']
+    sx, sy, _ = robot['spawn']
     reachable = grid.distances(sx, sy)
     candidates = [n for n, d in enumerate(reachable) if d < math.inf and grid.clearance[n] >= robot['goal_clearance']]
     rng = random.Random(seed)
 
-    master = launch_on_private_master(procs, 'bench_navigation', robot['launch'], node=False)
+    # hector_mapping's map frame starts at the spawn pose; slam_gmapping's is the odom frame, which
+    # the Pioneer's drive (odometrySource world) puts at the world's origin.
+    launch, map_in_world = robot['launch'], robot['spawn']
+    if mapper == 'gmapping':
+        launch, map_in_world = launch + ['mapper:=gmapping'], (0.0, 0.0, 0.0)
+    mx, my, myaw = map_in_world
+    master = launch_on_private_master(procs, 'bench_navigation', launch, node=False)
     master.setParam('/use_sim_time', True)  # before init_node, so that rospy's clock is the simulator's
     rospy.init_node('bench_navigation', anonymous=True, disable_signals=True)
     wait_until(lambda: rosgraph_service_up(master, '/gazebo/set_physics_properties'), 90, 'the simulator', procs)
@@ -179,7 +185,7 @@ def bench(name, goals, seed, rtf, procs, trace_file=None, cpu=False):
     wait_until(lambda: client.wait_for_server(rospy.Duration(1.0)), 120, 'move_base', procs)
     truth = Truth(robot['model'], walls, robot['outline'])
     if trace_file:
-        truth.follow_mapper(robot['spawn'])
+        truth.follow_mapper(map_in_world)
     wait_until(lambda: truth.pose is not None, 30, '/gazebo/model_states', procs)
     if rtf != 1.0:
         set_real_time_factor(rtf)
@@ -196,14 +202,14 @@ def bench(name, goals, seed, rtf, procs, trace_file=None, cpu=False):
         n = rng.choice(far_enough or candidates)
         gx, gy = grid.centre(n % grid.nx, n // grid.nx)
         gyaw = rng.uniform(-math.pi, math.pi)
-        # The goal in the map frame (the spawn pose).
-        dx, dy = gx - sx, gy - sy
+        # The goal in the map frame.
+        dx, dy = gx - mx, gy - my
         goal = MoveBaseGoal()
         goal.target_pose.header.frame_id = 'map'
-        goal.target_pose.pose.position.x = math.cos(syaw) * dx + math.sin(syaw) * dy
-        goal.target_pose.pose.position.y = -math.sin(syaw) * dx + math.cos(syaw) * dy
-        goal.target_pose.pose.orientation.z = math.sin((gyaw - syaw) / 2)
-        goal.target_pose.pose.orientation.w = math.cos((gyaw - syaw) / 2)
+        goal.target_pose.pose.position.x = math.cos(myaw) * dx + math.sin(myaw) * dy
+        goal.target_pose.pose.position.y = -math.sin(myaw) * dx + math.cos(myaw) * dy
+        goal.target_pose.pose.orientation.z = math.sin((gyaw - myaw) / 2)
+        goal.target_pose.pose.orientation.w = math.cos((gyaw - myaw) / 2)
         bound = from_here[n] / robot['max_vel']
         with truth.lock:
             truth.goal = k + 1
@@ -255,6 +261,8 @@ def main():
     parser.add_argument('--rtf', type=float, default=0.0,
                         help='the simulator\'s target real-time factor (default 0: as fast as it goes)')
     parser.add_argument('--realtime', action='store_true', help='the same as --rtf 1')
+    parser.add_argument('--mapper', choices=['hector', 'gmapping'], default='hector',
+                        help='the Pioneer\'s mapper: hector_mapping (default) or the report\'s slam_gmapping')
     parser.add_argument('--cpu', action='store_true', help='print each process\'s CPU use (one robot)')
     parser.add_argument('--trace', metavar='CSV',
                         help='write the true pose and the mapper\'s every 0.25 s of sim time (one robot)')
@@ -263,10 +271,13 @@ def main():
     if not args.robot:
         extra = ['--goals', str(args.goals), '--seed', str(args.seed), '--rtf', str(rtf)]
         return each_robot_in_its_own_process(__file__, sorted(ROBOTS), extra)
-    print('command: scripts/bench_navigation.py --robot %s --goals %d --seed %d --rtf %g%s' % (
-        args.robot, args.goals, args.seed, rtf, ' --cpu' if args.cpu else ''), flush=True)
+    if args.mapper == 'gmapping' and args.robot != 'pioneer':
+        parser.error('--mapper gmapping: only the Pioneer has odometry for slam_gmapping')
+    print('command: scripts/bench_navigation.py --robot %s --goals %d --seed %d --rtf %g%s%s' % (
+        args.robot, args.goals, args.seed, rtf, ' --mapper gmapping' if args.mapper == 'gmapping' else '',
+        ' --cpu' if args.cpu else ''), flush=True)
     return run_with_processes('bench_navigation', lambda procs: bench(args.robot, args.goals, args.seed, rtf, procs,
-                                                                     args.trace, args.cpu))
+                                                                     args.trace, args.cpu, args.mapper))
 
 
 if __name__ == '__main__':
