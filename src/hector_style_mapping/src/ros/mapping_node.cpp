@@ -12,13 +12,11 @@
 
 #include "hector_style_mapping/ros/map_message.h"
 #include "hector_style_mapping/ros/scan_conversion.h"
+#include "hector_style_mapping/ros/scan_input.h"
 
 namespace hector_style_mapping {
 namespace {
 
-// A scan stamped this much before the last one means the clock was restarted (simulator reset,
-// bag loop), not a late message.
-constexpr double kTimeResetSeconds = 1.0;
 // How long a scan may wait for the tf it needs.
 const ros::Duration kTfWait(0.1);
 // The trajectory gets a pose when the robot moved this far or turned this much since the last one.
@@ -37,10 +35,6 @@ geometry_msgs::Quaternion yawQuaternion(double yaw) {
   q.z = std::sin(yaw / 2.0);
   q.w = std::cos(yaw / 2.0);
   return q;
-}
-
-double yawOf(const geometry_msgs::Quaternion& q) {
-  return std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
 }
 
 geometry_msgs::Pose poseMessage(const Pose2D& pose) {
@@ -113,22 +107,23 @@ MappingNode::MappingNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
 }
 
 bool MappingNode::acceptStamp(const ros::Time& stamp) {
-  if (last_scan_stamp_.isZero() || stamp > last_scan_stamp_) {
-    last_scan_stamp_ = stamp;
-    return true;
-  }
-  const double back = (last_scan_stamp_ - stamp).toSec();
-  if (back > kTimeResetSeconds) {
-    ROS_WARN("hector_mapping: time went back %.3f s (from %.3f to %.3f; a simulator or bag restart?): tf buffer "
-             "cleared, mapping goes on in the same map (publish 'reset' on %s to start a new one)",
-             back, last_scan_stamp_.toSec(), stamp.toSec(), nh_.resolveName(options_.sys_msg_topic).c_str());
-    tf_buffer_.clear();
-    last_scan_stamp_ = stamp;
-    have_map_transform_ = false;  // its stamp is from the old time line: never newer than what comes now
-    return true;
+  const ros::Time previous = scan_stamps_.last();
+  switch (scan_stamps_.accept(stamp)) {
+    case StampOrder::kNewer:
+      return true;
+    case StampOrder::kClockRestarted:
+      ROS_WARN("hector_mapping: time went back %.3f s (from %.3f to %.3f; a simulator or bag restart?): tf buffer "
+               "cleared, mapping goes on in the same map (publish 'reset' on %s to start a new one)",
+               (previous - stamp).toSec(), previous.toSec(), stamp.toSec(),
+               nh_.resolveName(options_.sys_msg_topic).c_str());
+      tf_buffer_.clear();
+      have_map_transform_ = false;  // its stamp is from the old time line: never newer than what comes now
+      return true;
+    case StampOrder::kStale:
+      break;
   }
   ROS_WARN_THROTTLE(5.0, "hector_mapping: scan stamped %.6f is not newer than the last one (%.6f): dropped",
-                    stamp.toSec(), last_scan_stamp_.toSec());
+                    stamp.toSec(), previous.toSec());
   return false;
 }
 
@@ -136,10 +131,7 @@ bool MappingNode::laserInBase(const sensor_msgs::LaserScan& scan, Eigen::Isometr
   try {
     const geometry_msgs::TransformStamped t =
         tf_buffer_.lookupTransform(options_.base_frame, scan.header.frame_id, scan.header.stamp, kTfWait);
-    const auto& r = t.transform.rotation;
-    const auto& p = t.transform.translation;
-    laser_in_base->linear() = Eigen::Quaterniond(r.w, r.x, r.y, r.z).normalized().toRotationMatrix();
-    laser_in_base->translation() = Eigen::Vector3d(p.x, p.y, p.z);
+    *laser_in_base = isometryOf(t.transform);
     return true;
   } catch (const tf2::TransformException& e) {
     ROS_WARN_THROTTLE(5.0, "hector_mapping: no tf from base_frame '%s' to the scan's frame '%s' at %.3f: %s. Scan "
@@ -152,7 +144,7 @@ bool MappingNode::laserInBase(const sensor_msgs::LaserScan& scan, Eigen::Isometr
 
 void MappingNode::scanCallback(const sensor_msgs::LaserScan::ConstPtr& scan) {
   const ros::Time stamp = scan->header.stamp;
-  const ros::Time previous_stamp = last_scan_stamp_;
+  const ros::Time previous_stamp = scan_stamps_.last();
   if (!acceptStamp(stamp)) return;
   // Sizes the correlative search's window; 0 (the first scan, a clock restart) turns it off.
   const double seconds_since_last_scan =

@@ -10,14 +10,13 @@
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 
 #include "hector_style_mapping/ros/scan_conversion.h"
+#include "hector_style_mapping/ros/scan_input.h"
 
 namespace odometry_slam {
 namespace {
 
 namespace hsm = hector_style_mapping;
 
-// A scan stamped this much before the last one means the clock was restarted (simulator reset, bag loop).
-constexpr double kTimeResetSeconds = 1.0;
 // How long a scan may wait for the tf it needs.
 const ros::Duration kTfWait(0.1);
 
@@ -26,10 +25,6 @@ GmappingOptions loadOrThrow(const ros::NodeHandle& private_nh) {
   const std::string problems = loadGmappingOptions(private_nh, &options);
   if (!problems.empty()) throw std::invalid_argument(problems);
   return options;
-}
-
-double yawOf(const geometry_msgs::Quaternion& q) {
-  return std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
 }
 
 // Beams beyond `usable` (from the laser) become free rays cut to that length.
@@ -83,21 +78,22 @@ SlamGmappingNode::SlamGmappingNode(ros::NodeHandle nh, ros::NodeHandle private_n
 }
 
 bool SlamGmappingNode::acceptStamp(const ros::Time& stamp) {
-  if (last_scan_stamp_.isZero() || stamp > last_scan_stamp_) {
-    last_scan_stamp_ = stamp;
-    return true;
-  }
-  const double back = (last_scan_stamp_ - stamp).toSec();
-  if (back > kTimeResetSeconds) {
-    ROS_WARN("slam_gmapping: time went back %.3f s (from %.3f to %.3f; a simulator or bag restart?): tf buffer "
-             "cleared, mapping goes on in the same map", back, last_scan_stamp_.toSec(), stamp.toSec());
-    tf_buffer_.clear();
-    last_scan_stamp_ = stamp;
-    last_map_stamp_ = last_transform_stamp_ = ros::Time();
-    return true;
+  const ros::Time previous = scan_stamps_.last();
+  switch (scan_stamps_.accept(stamp)) {
+    case hsm::StampOrder::kNewer:
+      return true;
+    case hsm::StampOrder::kClockRestarted:
+      ROS_WARN("slam_gmapping: time went back %.3f s (from %.3f to %.3f; a simulator or bag restart?): tf buffer "
+               "cleared, mapping goes on in the same map", (previous - stamp).toSec(), previous.toSec(),
+               stamp.toSec());
+      tf_buffer_.clear();
+      last_map_stamp_ = last_transform_stamp_ = ros::Time();
+      return true;
+    case hsm::StampOrder::kStale:
+      break;
   }
   ROS_WARN_THROTTLE(5.0, "slam_gmapping: scan stamped %.6f is not newer than the last one (%.6f): dropped",
-                    stamp.toSec(), last_scan_stamp_.toSec());
+                    stamp.toSec(), previous.toSec());
   return false;
 }
 
@@ -105,10 +101,7 @@ bool SlamGmappingNode::laserInBase(const sensor_msgs::LaserScan& scan, Eigen::Is
   try {
     const geometry_msgs::TransformStamped t =
         tf_buffer_.lookupTransform(options_.base_frame, scan.header.frame_id, scan.header.stamp, kTfWait);
-    const auto& r = t.transform.rotation;
-    const auto& p = t.transform.translation;
-    laser_in_base->linear() = Eigen::Quaterniond(r.w, r.x, r.y, r.z).normalized().toRotationMatrix();
-    laser_in_base->translation() = Eigen::Vector3d(p.x, p.y, p.z);
+    *laser_in_base = hsm::isometryOf(t.transform);
     return true;
   } catch (const tf2::TransformException& e) {
     ROS_WARN_THROTTLE(5.0, "slam_gmapping: no tf from base_frame '%s' to the scan's frame '%s' at %.3f: %s. Scan "
@@ -122,7 +115,7 @@ std::optional<Pose2D> SlamGmappingNode::odometryAt(const ros::Time& stamp) {
   try {
     const geometry_msgs::TransformStamped t =
         tf_buffer_.lookupTransform(options_.odom_frame, options_.base_frame, stamp, kTfWait);
-    return Pose2D{t.transform.translation.x, t.transform.translation.y, yawOf(t.transform.rotation)};
+    return Pose2D{t.transform.translation.x, t.transform.translation.y, hsm::yawOf(t.transform.rotation)};
   } catch (const tf2::TransformException& e) {
     ROS_WARN_THROTTLE(5.0, "slam_gmapping: needs the robot's odometry as tf %s -> %s (~odom_frame -> ~base_frame), "
                       "and there is none at %.3f: %s. Scans are skipped until it comes. (Does the robot's driver "

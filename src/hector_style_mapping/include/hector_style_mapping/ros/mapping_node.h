@@ -18,6 +18,7 @@
 #include <tf2_ros/transform_listener.h>
 
 #include "hector_style_mapping/ros/node_options.h"
+#include "hector_style_mapping/ros/scan_input.h"
 #include "hector_style_mapping/slam_processor.h"
 
 namespace hector_style_mapping {
@@ -76,7 +77,7 @@ class MappingNode {
   ros::Timer map_timer_;              // sim time
   ros::WallTimer transform_timer_;    // wall time: a paused or fast simulation still gets its tf
 
-  ros::Time last_scan_stamp_;
+  ScanStamps scan_stamps_;
   bool have_initial_pose_ = false;
   Pose2D initial_pose_;
   std::optional<Pose2D> last_scan_odometry_;  // odom -> base (planar) at the last matched scan

@@ -12,6 +12,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
+#include "hector_style_mapping/ros/scan_input.h"
 #include "odometry_slam/odometry_slam.h"
 #include "odometry_slam/ros/gmapping_options.h"
 
@@ -53,7 +54,8 @@ class SlamGmappingNode {
   ros::Timer transform_timer_;  // ROS time, as upstream's loop
 
   long scans_received_ = 0;
-  ros::Time last_scan_stamp_, last_map_stamp_, last_transform_stamp_;
+  hector_style_mapping::ScanStamps scan_stamps_;
+  ros::Time last_map_stamp_, last_transform_stamp_;
   bool ranges_known_ = false;  // maxRange and maxUrange fixed from the first scan
   double max_range_ = 0.0, max_usable_range_ = 0.0;
   nav_msgs::OccupancyGrid map_;  // the last published map (dynamic_map answers with it)
