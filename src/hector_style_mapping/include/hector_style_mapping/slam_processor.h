@@ -108,6 +108,11 @@ class SlamProcessor {
   int search_win_count_ = 0;
 };
 
+// Gauss-Newton from `start` through every level of `map`, coarsest first, with SlamProcessor's iteration caps;
+// the finest level's match. For other front ends on the same matcher.
+ScanMatchResult matchThroughLevels(const ScanMatcher& matcher, const MultiResolutionMap& map, const ScanPoints& scan,
+                                   const Pose2D& start);
+
 // SlamProcessor::covariance()'s formula for a match and the surface-normal Hessian at its pose; for other
 // front ends on the same matcher.
 Eigen::Matrix3d matchCovariance(const ScanMatchResult& match, const Eigen::Matrix3d& surface_normal_hessian);

@@ -44,14 +44,20 @@ void SlamProcessor::reset(const Pose2D& start) {
   search_win_count_ = 0;
 }
 
-ScanMatchResult SlamProcessor::matchThroughLevels(const ScanPoints& scan, const Pose2D& start) const {
+ScanMatchResult matchThroughLevels(const ScanMatcher& matcher, const MultiResolutionMap& map, const ScanPoints& scan,
+                                   const Pose2D& start) {
   ScanMatchResult match;
   match.pose = start;
-  for (int level = map_.levels() - 1; level >= 0; --level) {
-    const int iterations = level == 0 ? kFinestLevelIterations : kCoarseLevelIterations;
-    match = matcher_.matchWithDetails(map_.level(level), scan, match.pose, iterations);
+  for (int level = map.levels() - 1; level >= 0; --level) {
+    const int iterations =
+        level == 0 ? SlamProcessor::kFinestLevelIterations : SlamProcessor::kCoarseLevelIterations;
+    match = matcher.matchWithDetails(map.level(level), scan, match.pose, iterations);
   }
   return match;
+}
+
+ScanMatchResult SlamProcessor::matchThroughLevels(const ScanPoints& scan, const Pose2D& start) const {
+  return hector_style_mapping::matchThroughLevels(matcher_, map_, scan, start);
 }
 
 void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double seconds_since_last_scan) {

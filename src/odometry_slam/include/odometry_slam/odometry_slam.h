@@ -84,7 +84,6 @@ class OdometrySlam {
 
  private:
   bool due(const Pose2D& odometry, double time);
-  hector_style_mapping::ScanMatchResult match(const ScanPoints& scan, const Pose2D& start) const;
   void insert(const ScanPoints& scan, const Pose2D& odometry, double time);
 
   OdometrySlamOptions options_;

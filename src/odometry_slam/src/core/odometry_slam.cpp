@@ -95,17 +95,6 @@ bool OdometrySlam::due(const Pose2D& odometry, double time) {
          (options_.temporal_update >= 0.0 && time - processed_time_ > options_.temporal_update);
 }
 
-hsm::ScanMatchResult OdometrySlam::match(const ScanPoints& scan, const Pose2D& start) const {
-  hsm::ScanMatchResult result;
-  result.pose = start;
-  for (int level = map_.levels() - 1; level >= 0; --level) {
-    const int iterations =
-        level == 0 ? hsm::SlamProcessor::kFinestLevelIterations : hsm::SlamProcessor::kCoarseLevelIterations;
-    result = matcher_.matchWithDetails(map_.level(level), scan, result.pose, iterations);
-  }
-  return result;
-}
-
 void OdometrySlam::insert(const ScanPoints& scan, const Pose2D& odometry, double time) {
   map_.updateByScan(scan, pose_);
   counts_.addLastUpdate(map_.finest());
@@ -137,7 +126,7 @@ OdometrySlam::Outcome OdometrySlam::addScan(const ScanPoints& scan, const Pose2D
   const double rotation_sigma = options_.stt * rotation + options_.str * distance;
 
   const Pose2D predicted = pose_;
-  const hsm::ScanMatchResult matched = match(scan, predicted);
+  const hsm::ScanMatchResult matched = hsm::matchThroughLevels(matcher_, map_, scan, predicted);
   const Pose2D correction = hsm::between(predicted, matched.pose);
   const bool accepted =
       matched.point_count > 0 &&
