@@ -22,6 +22,7 @@ namespace nc = navigation_core;
 struct CostmapROS::Source {
   std::string name, topic, sensor_frame, data_type;
   double expected_update_rate = 0.0;
+  double observation_persistence = 0.0;
   bool inf_is_valid = false;
   nc::ObstacleLayerOptions options;
   ros::Time last_message;
@@ -31,6 +32,14 @@ struct CostmapROS::Source {
     std::vector<nc::Point3> points;  // in `frame`
   };
   std::deque<Raw> pending;  // waiting for their transform
+  // A LaserScan's beam directions, kept while the scans' angles stay the same.
+  struct BeamDirections {
+    float angle_min = 0.0f, angle_increment = 0.0f;
+    std::vector<double> cos, sin;
+  } beams;
+  // What each update applies, in the costmap's frame: as costmap_2d's observation buffer, the
+  // latest observation when observation_persistence is 0, else those of the last that many seconds.
+  std::deque<std::pair<ros::Time, nc::Observation>> kept;
 };
 
 namespace {
@@ -63,6 +72,30 @@ nc::Footprint footprintFrom(XmlRpc::XmlRpcValue& v, const std::string& where) {
     footprint.push_back({number(v[i][0], point), number(v[i][1], point)});
   }
   return footprint;
+}
+
+// Points seen from `frame` at `stamp` in the costmap's global frame, with the sensor's origin;
+// false while tf cannot tell where the sensor was then.
+bool toGlobal(const tf2_ros::Buffer& tf, const std::string& global_frame, const std::string& frame,
+              const ros::Time& stamp, const std::vector<nc::Point3>& points, nc::Observation& observation) {
+  if (!tf.canTransform(global_frame, frame, stamp)) return false;
+  geometry_msgs::TransformStamped t;
+  try {
+    t = tf.lookupTransform(global_frame, frame, stamp);
+  } catch (const tf2::TransformException&) {
+    return false;
+  }
+  tf2::Transform to_global;
+  tf2::fromMsg(t.transform, to_global);
+  const tf2::Vector3 origin = to_global * tf2::Vector3(0, 0, 0);
+  observation.origin = {origin.x(), origin.y(), origin.z()};
+  observation.points.clear();
+  observation.points.reserve(points.size());
+  for (const nc::Point3& p : points) {
+    const tf2::Vector3 g = to_global * tf2::Vector3(p.x, p.y, p.z);
+    observation.points.push_back({g.x(), g.y(), g.z()});
+  }
+  return true;
 }
 
 }  // namespace
@@ -220,6 +253,7 @@ void CostmapROS::readObstacleLayer(const ros::NodeHandle& layer_nh, bool first) 
     s.sensor_frame = frameId(param<std::string>(source_nh, "sensor_frame", ""));
     s.data_type = param<std::string>(source_nh, "data_type", "PointCloud");
     s.expected_update_rate = param(source_nh, "expected_update_rate", 0.0);
+    s.observation_persistence = param(source_nh, "observation_persistence", 0.0);
     s.inf_is_valid = param(source_nh, "inf_is_valid", false);
     s.options.min_obstacle_height = param(source_nh, "min_obstacle_height", 0.0);
     s.options.max_obstacle_height = std::min(layer_max_height, param(source_nh, "max_obstacle_height", 2.0));
@@ -289,14 +323,26 @@ void CostmapROS::onScan(Source& source, const sensor_msgs::LaserScanConstPtr& sc
   // As laser_geometry projects a scan: readings in [range_min, range_max); with inf_is_valid an
   // infinite reading (REP 117: nothing within range) becomes one just short of range_max, which
   // clears along its ray.
+  Source::BeamDirections& beams = source.beams;
+  const std::size_t n = scan->ranges.size();
+  if (beams.cos.size() != n || beams.angle_min != scan->angle_min || beams.angle_increment != scan->angle_increment) {
+    beams.angle_min = scan->angle_min;
+    beams.angle_increment = scan->angle_increment;
+    beams.cos.resize(n);
+    beams.sin.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double a = scan->angle_min + i * scan->angle_increment;
+      beams.cos[i] = std::cos(a);
+      beams.sin[i] = std::sin(a);
+    }
+  }
   std::vector<nc::Point3> points;
-  points.reserve(scan->ranges.size());
-  for (std::size_t i = 0; i < scan->ranges.size(); ++i) {
+  points.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
     float r = scan->ranges[i];
     if (source.inf_is_valid && std::isinf(r) && r > 0) r = scan->range_max - 1e-4f;
     if (!(r >= scan->range_min && r < scan->range_max)) continue;
-    const double a = scan->angle_min + i * scan->angle_increment;
-    points.push_back({r * std::cos(a), r * std::sin(a), 0.0});
+    points.push_back({r * beams.cos[i], r * beams.sin[i], 0.0});
   }
   queue(source, scan->header.frame_id, scan->header.stamp, std::move(points));
 }
@@ -400,6 +446,38 @@ void CostmapROS::updateLoop() {
   }
 }
 
+void CostmapROS::keepObservations(Source& s, const ros::Time& now) {
+  nc::Observation observation;
+  if (s.observation_persistence <= 0) {
+    // Only the latest matters: the newest message whose transform has come, and nothing older.
+    for (std::size_t k = s.pending.size(); k-- > 0;) {
+      if (!toGlobal(tf_, global_frame_, s.pending[k].frame, s.pending[k].stamp, s.pending[k].points, observation)) continue;
+      s.kept.clear();
+      s.kept.emplace_back(s.pending[k].stamp, std::move(observation));
+      s.pending.erase(s.pending.begin(), s.pending.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+      break;
+    }
+  } else {
+    while (!s.pending.empty() && toGlobal(tf_, global_frame_, s.pending.front().frame, s.pending.front().stamp,
+                                                 s.pending.front().points, observation)) {
+      s.kept.emplace_back(s.pending.front().stamp, std::move(observation));
+      s.pending.pop_front();
+    }
+    while (!s.kept.empty() && (now - s.kept.front().first).toSec() > s.observation_persistence) s.kept.pop_front();
+  }
+  // What has waited longer than its transform can take is dropped, saying why.
+  while (!s.pending.empty() && (now - s.pending.front().stamp).toSec() > 1.0 + transform_tolerance_) {
+    const Source::Raw& raw = s.pending.front();
+    try {
+      tf_.lookupTransform(global_frame_, raw.frame, raw.stamp);
+    } catch (const tf2::TransformException& e) {
+      ROS_WARN_THROTTLE(5, "%s: dropped an observation from %s (frame %s): %s", nh_.getNamespace().c_str(),
+                        s.topic.c_str(), raw.frame.c_str(), e.what());
+    }
+    s.pending.pop_front();
+  }
+}
+
 void CostmapROS::updateMap() {
   nc::Pose2 pose;
   const bool have_pose = robotPose(pose);
@@ -408,31 +486,15 @@ void CostmapROS::updateMap() {
     layers_->updateOrigin(pose.x, pose.y);
   }
   const ros::Time now = ros::Time::now();
-  for (auto& s : sources_) {
-    while (!s->pending.empty()) {
-      Source::Raw& raw = s->pending.front();
-      geometry_msgs::TransformStamped t;
-      try {
-        t = tf_.lookupTransform(global_frame_, raw.frame, raw.stamp);
-      } catch (const tf2::TransformException& e) {
-        if ((now - raw.stamp).toSec() <= 1.0 + transform_tolerance_) break;  // its transform may yet come
-        ROS_WARN_THROTTLE(5, "%s: dropped an observation from %s (frame %s): %s", nh_.getNamespace().c_str(),
-                          s->topic.c_str(), raw.frame.c_str(), e.what());
-        s->pending.pop_front();
-        continue;
-      }
-      nc::Observation observation;
-      tf2::Transform to_global;
-      tf2::fromMsg(t.transform, to_global);
-      const tf2::Vector3 origin = to_global * tf2::Vector3(0, 0, 0);
-      observation.origin = {origin.x(), origin.y(), origin.z()};
-      observation.points.reserve(raw.points.size());
-      for (const nc::Point3& p : raw.points) {
-        const tf2::Vector3 g = to_global * tf2::Vector3(p.x, p.y, p.z);
-        observation.points.push_back({g.x(), g.y(), g.z()});
-      }
-      layers_->addObservation(observation, s->options);
-      s->pending.pop_front();
+  for (auto& s : sources_) keepObservations(*s, now);
+  // As costmap_2d's obstacle layer: every source's clearing first, then every source's marking, so
+  // that one sensor's free rays do not erase what another (or an older kept message) saw.
+  for (const bool marking : {false, true}) {
+    for (const auto& s : sources_) {
+      nc::ObstacleLayerOptions pass = s->options;
+      (marking ? pass.clearing : pass.marking) = false;
+      if (!(marking ? pass.marking : pass.clearing)) continue;
+      for (const auto& kept : s->kept) layers_->addObservation(kept.second, pass);
     }
   }
   layers_->update(have_pose ? std::optional<nc::Pose2>(pose) : std::nullopt);

@@ -18,6 +18,9 @@ void requireNonNegative(double value, const char* name) {
                                 std::to_string(value));
 }
 
+// The rank of an offset beyond inflation_radius: never queued.
+constexpr unsigned kBeyondRadius = ~0u;
+
 struct FrontCell {
   unsigned index, x, y, source_x, source_y;
 };
@@ -43,7 +46,7 @@ Inflation::Inflation(const InflationOptions& options, double inscribed_radius, d
     for (unsigned dx = 0; dx < n; ++dx) {
       const double d = std::hypot(dx, dy);
       cost_table_[dy * n + dx] = costAt(d);
-      rank_table_[dy * n + dx] = ranks.at(d);
+      rank_table_[dy * n + dx] = d > cell_radius_ ? kBeyondRadius : ranks.at(d);
     }
   }
 }
@@ -72,8 +75,10 @@ void Inflation::apply(Costmap& map) const {
     if (seen[index]) return;
     const unsigned dx = x > source_x ? x - source_x : source_x - x;
     const unsigned dy = y > source_y ? y - source_y : source_y - y;
-    if (dx >= n || dy >= n || std::hypot(dx, dy) > cell_radius_) return;
-    buckets[rank_table_[dy * n + dx]].push_back({index, x, y, source_x, source_y});
+    if (dx >= n || dy >= n) return;
+    const unsigned rank = rank_table_[dy * n + dx];
+    if (rank == kBeyondRadius) return;
+    buckets[rank].push_back({index, x, y, source_x, source_y});
   };
   for (auto& bucket : buckets) {
     // A bucket may grow while it is read (neighbours at the same distance from their source).

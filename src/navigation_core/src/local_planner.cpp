@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "navigation_core/cost_values.h"
+#include "navigation_core/outline_cells.h"
 
 namespace navigation_core {
 namespace {
@@ -107,34 +108,27 @@ void LocalPlanner::distanceGrid(const Costmap& costmap, const std::vector<unsign
 }
 
 double LocalPlanner::footprintCost(const Costmap& costmap, const Footprint& footprint, const Pose2& pose) {
-  // Cell lookups written out (this runs for every pose of every sampled trajectory).
-  const double res = costmap.resolution(), ox = costmap.originX(), oy = costmap.originY();
-  const double nx = costmap.sizeX(), ny = costmap.sizeY();
+  return footprintCost(costmap, footprint, pose, std::cos(pose.theta), std::sin(pose.theta));
+}
+
+double LocalPlanner::footprintCost(const Costmap& costmap, const Footprint& footprint, const Pose2& pose,
+                                   double cos_theta, double sin_theta) {
+  unsigned cx, cy;
+  if (!costmap.worldToMap(pose.x, pose.y, cx, cy)) return -1.0;
   const std::vector<std::uint8_t>& costs = costmap.costs();
-  const auto cellAt = [&](double wx, double wy) -> int {
-    const double fx = (wx - ox) / res, fy = (wy - oy) / res;
-    if (!(fx >= 0 && fy >= 0 && fx < nx && fy < ny)) return -1;
-    return static_cast<int>(fy) * static_cast<int>(nx) + static_cast<int>(fx);
-  };
-  const int centre_cell = cellAt(pose.x, pose.y);
-  if (centre_cell < 0) return -1.0;
-  const std::uint8_t centre = costs[static_cast<std::size_t>(centre_cell)];
+  const std::uint8_t centre = costs[costmap.index(cx, cy)];
   // As base_local_planner's polygon check: lethal or unknown under the centre or the outline. An
   // inscribed centre alone (the robot pushed near a wall, e.g. by slip) does not forbid a move,
   // else nothing could get it out again.
   if (centre == kLethalObstacle || centre == kNoInformation) return -1.0;
   std::uint8_t highest = centre;
-  // At most half a cell apart along the outline.
-  const bool clear = forEachOutlinePoint(footprint, pose, 0.5 * res, [&](double x, double y) {
-    const int cell = cellAt(x, y);
-    if (cell < 0) return false;
-    const std::uint8_t cost = costs[static_cast<std::size_t>(cell)];
+  const bool clear = forEachOutlineCell(costmap, footprint, pose, cos_theta, sin_theta, [&](unsigned cell) {
+    const std::uint8_t cost = costs[cell];
     if (cost == kLethalObstacle || cost == kNoInformation) return false;
     highest = std::max(highest, cost);
     return true;
   });
-  if (!clear) return -1.0;
-  return highest;
+  return clear ? highest : -1.0;
 }
 
 Trajectory LocalPlanner::simulate(const Costmap& costmap, const Footprint& footprint, const Pose2& pose,
@@ -149,11 +143,13 @@ Trajectory LocalPlanner::simulate(const Costmap& costmap, const Footprint& footp
   const bool scored = path_distance_.size() == costmap.costs().size();
   Pose2 p = pose;
   double highest = 0.0;
+  double c = std::cos(p.theta), s = std::sin(p.theta);
   for (int k = 0; k < steps; ++k) {
-    p.x += command.x * std::cos(p.theta) * dt;
-    p.y += command.x * std::sin(p.theta) * dt;
+    p.x += command.x * c * dt;
+    p.y += command.x * s * dt;
     p.theta += command.theta * dt;
-    const double cost = footprintCost(costmap, footprint, p);
+    if (command.theta != 0.0) c = std::cos(p.theta), s = std::sin(p.theta);
+    const double cost = footprintCost(costmap, footprint, p, c, s);
     if (cost < 0) return t;  // cost stays -1: unsafe
     unsigned cx, cy;
     if (scored && costmap.worldToMap(p.x, p.y, cx, cy)) {

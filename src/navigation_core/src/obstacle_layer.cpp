@@ -15,8 +15,10 @@ void clearLine(Costmap& layer, int x0, int y0, int x1, int y1, unsigned max_leng
   const int dx = x1 - x0, dy = y1 - y0;
   const int abs_dx = std::abs(dx), abs_dy = std::abs(dy);
   const int step_x = dx > 0 ? 1 : -1, step_y = dy > 0 ? 1 : -1;
-  const double distance = std::hypot(dx, dy);
-  const double scale = distance == 0.0 ? 1.0 : std::min(1.0, max_length / distance);
+  // Shortened to max_length cells only when longer (a square root per ray otherwise: 720 a scan).
+  const double length2 = static_cast<double>(dx) * dx + static_cast<double>(dy) * dy;
+  const double max2 = static_cast<double>(max_length) * max_length;
+  const double scale = length2 <= max2 ? 1.0 : max_length / std::sqrt(length2);
   const bool x_major = abs_dx >= abs_dy;
   const int major = x_major ? abs_dx : abs_dy, minor = x_major ? abs_dy : abs_dx;
   const int end = std::min(static_cast<int>(scale * major), major);

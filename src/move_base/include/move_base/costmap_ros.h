@@ -68,6 +68,7 @@ class CostmapROS {
              std::vector<navigation_core::Point3> points);
   void updateLoop();
   void updateMap();  // under mutex_
+  void keepObservations(Source& source, const ros::Time& now);  // under mutex_
   void publishCostmap(bool full);
   void publishFootprint(const navigation_core::Pose2& pose);
 

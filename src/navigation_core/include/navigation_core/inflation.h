@@ -41,7 +41,7 @@ class Inflation {
   double resolution_;
   unsigned cell_radius_;
   // By |dx|, |dy| up to cell_radius_ + 1: the cost there and the rank of the distance (which
-  // bucket of the spreading front the cell joins).
+  // bucket of the spreading front the cell joins; kBeyondRadius in inflation.cpp past the radius).
   std::vector<std::uint8_t> cost_table_;
   std::vector<unsigned> rank_table_;
   unsigned ranks_ = 0;

@@ -68,6 +68,9 @@ class LocalPlanner {
   // The highest cost under the footprint's outline and centre at `pose`, or -1 if they touch an
   // obstacle (lethal or unknown cells, off the map), as base_local_planner checks a polygon.
   static double footprintCost(const Costmap& costmap, const Footprint& footprint, const Pose2& pose);
+  // The same with the heading's cosine and sine given (the trajectory simulation has them).
+  static double footprintCost(const Costmap& costmap, const Footprint& footprint, const Pose2& pose, double cos_theta,
+                              double sin_theta);
 
  private:
   void distanceGrid(const Costmap& costmap, const std::vector<unsigned>& seeds, std::vector<double>& out) const;
