@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "navigation_core/cost_values.h"
+#include "navigation_core/outline_cells.h"
 
 namespace navigation_core {
 namespace {
@@ -13,26 +14,20 @@ namespace {
 // cells along the major axis plus the cell where it stops, as costmap_2d's raytraceLine.
 void clearLine(Costmap& layer, int x0, int y0, int x1, int y1, unsigned max_length) {
   const int dx = x1 - x0, dy = y1 - y0;
-  const int abs_dx = std::abs(dx), abs_dy = std::abs(dy);
-  const int step_x = dx > 0 ? 1 : -1, step_y = dy > 0 ? 1 : -1;
   // Shortened to max_length cells only when longer (a square root per ray otherwise: 720 a scan).
   const double length2 = static_cast<double>(dx) * dx + static_cast<double>(dy) * dy;
   const double max2 = static_cast<double>(max_length) * max_length;
   const double scale = length2 <= max2 ? 1.0 : max_length / std::sqrt(length2);
-  const bool x_major = abs_dx >= abs_dy;
-  const int major = x_major ? abs_dx : abs_dy, minor = x_major ? abs_dy : abs_dx;
+  const int major = std::max(std::abs(dx), std::abs(dy));
   const int end = std::min(static_cast<int>(scale * major), major);
-  int x = x0, y = y0, error = major / 2;
-  for (int i = 0; i < end; ++i) {
-    layer.setCost(static_cast<unsigned>(x), static_cast<unsigned>(y), kFreeSpace);
-    if (x_major) x += step_x; else y += step_y;
-    error += minor;
-    if (error >= major) {
-      if (x_major) y += step_y; else x += step_x;
-      error -= major;
-    }
-  }
-  layer.setCost(static_cast<unsigned>(x), static_cast<unsigned>(y), kFreeSpace);
+  std::vector<std::uint8_t>& costs = layer.costs();
+  costs[layer.index(static_cast<unsigned>(x0), static_cast<unsigned>(y0))] = kFreeSpace;
+  int steps = 0;
+  forEachLineCellAfter(x0, y0, x1, y1, layer.sizeX(), [&](unsigned cell) {
+    if (++steps > end) return false;
+    costs[cell] = kFreeSpace;
+    return true;
+  });
 }
 
 }  // namespace

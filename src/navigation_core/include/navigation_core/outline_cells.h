@@ -1,7 +1,8 @@
 #pragma once
 // The cells under a footprint's outline on a costmap: each edge's cells from one vertex's cell to
 // the next's, as a Bresenham line walks them (costmap_2d's footprint check walks its edges so).
-// Inline and in integers: the local planner runs it for every pose of every sampled trajectory.
+// Inline and in integers: the local planner runs it for every pose of every sampled trajectory,
+// and the obstacle layer walks its clearing rays with the same line walker.
 #include <cstdlib>
 
 #include "navigation_core/costmap.h"
