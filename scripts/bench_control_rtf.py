@@ -10,7 +10,7 @@ brought up by their own launch files, headless, each on a private roscore.
                 exercise node commands both arms at 50 Hz
 
 For each: the factor at the world's real_time_factor 1, then unthrottled (max_update_rate 0).
-Reuses bench_node_rtf.py's process handling and /clock recorder. Output lines:
+Reuses bench_node_rtf.py's process handling and its C++ /clock and scan listener. Output lines:
   control real-time factor (<robot>, real time): X
   control real-time factor (<robot>, unthrottled): Y
 """
@@ -20,8 +20,8 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_node_rtf import (Recorder, each_robot_in_its_own_process, launch_on_private_master,  # noqa: E402
-                            measure, rosgraph_service_up, run_with_processes, unthrottle, wait_until)
+from bench_node_rtf import (ArrivalListener, each_robot_in_its_own_process, launch_on_private_master,  # noqa: E402
+                            measure, rosgraph_service_up, run_with_processes, unthrottle, wait_until, wall_window)
 
 ROBOTS = [
     ('simple_model', ['simple_model_control', 'simple_model.launch'], '/simple_model',
@@ -35,28 +35,25 @@ def bench(robot, launch, namespace, controller, scan_topic, seconds, procs):
     from controller_manager_msgs.srv import ListControllers
 
     master = launch_on_private_master(procs, 'bench_control_rtf', launch)
-    rec = Recorder()
-    subs = [rospy.Subscriber('/clock', rospy.AnyMsg, rec.on_clock, queue_size=1000, tcp_nodelay=True)]
-    if scan_topic:
-        subs.append(rospy.Subscriber(scan_topic, rospy.AnyMsg, rec.on_scan, queue_size=1000, tcp_nodelay=True))
+    listener = ArrivalListener(procs, robot, scan_topic)
     list_service = namespace + '/controller_manager/list_controllers'
     wait_until(lambda: rosgraph_service_up(master, list_service), 90, list_service, procs)
     lister = rospy.ServiceProxy(list_service, ListControllers)
     wait_until(lambda: any(c.name == controller and c.state == 'running' for c in lister().controller), 60,
                '%s running' % controller, procs)
+    listener.wait_ready()
     time.sleep(1.0)
     running = sum(c.state == 'running' for c in lister().controller)
-    results = [measure(rec, seconds, 'real time')]
+    windows = [wall_window('real time', seconds)]
     unthrottle()
     time.sleep(1.0)
-    results.append(measure(rec, seconds, 'unthrottled'))
-    for r in results:
+    windows.append(wall_window('unthrottled', seconds))
+    arrivals = listener.stop()
+    for r in [measure(arrivals, start, end, label) for label, start, end in windows]:
         print('control real-time factor (%s, %s): %.2f' % (robot, r['label'], r['rtf']))
         print('  %d controllers running; %.2f s sim in %.2f s wall%s' % (
             running, r['sim'], r['wall'], ('; %d scans on %s' % (r['scans'], scan_topic)) if scan_topic else ''))
     sys.stdout.flush()
-    for s in subs:
-        s.unregister()
     procs.stop_all()
 
 

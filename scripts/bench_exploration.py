@@ -1,14 +1,15 @@
 #!/usr/bin/python3
 """Autonomous exploration over seeded start poses (issue 12): each robot's whole headless system
-(simulator, hector_mapping, move_base and find_frontier or explore_lite's explore) explores its maze
-from N random starts, one fresh bring-up per run on a private roscore.
+(simulator, mapper, move_base and find_frontier or explore_lite's explore) explores its maze from N
+random starts, one fresh bring-up per run on a private roscore.
 
   bench_exploration.py [--robot m_robot|pioneer] [--explorer find_frontier|explore] [--starts N]
-                       [--seed S] [--rtf F]
+                       [--seed S] [--rtf F] [--mapper gmapping|hector]
 
-  m_robot  find_frontier explore_maze.launch in the Capstone maze (laser 6 m), as fast as it goes
-  pioneer  pioneer_2dnav explore.launch in its 8 x 8 m maze (laser 30 m), at 4x real time (the
-           rate its 40 Hz, 720-beam laser and the mapper keep up with on 2 cores)
+  m_robot  find_frontier explore_maze.launch in the Capstone maze (hector_mapping, laser 6 m), as
+           fast as it goes
+  pioneer  pioneer_2dnav explore.launch in its 8 x 8 m maze (laser 30 m), at 10x real time, with
+           slam_gmapping (explore.launch's default), or with --mapper hector hector_mapping
 
 Starts are drawn from the cells the robot's centre can reach, at least 0.15 m more than its
 inscribed radius from every wall, with a random heading. For each run: completion (the node's
@@ -46,10 +47,12 @@ from explore_demo import Watch  # noqa: E402
 ROBOTS = {
     'm_robot': dict(launch=['find_frontier', 'explore_maze.launch'], model='m_robot',
                     walls=os.path.join(ROOT, 'src', 'm_robot_sim', 'config', 'capstone_map_walls.yaml'),
-                    inscribed=0.12, outline=(0.26, 0.22, 0.0), laser_range=6.0, rtf=0.0, timeout=600.0),
+                    inscribed=0.12, outline=(0.26, 0.22, 0.0), laser_range=6.0, rtf=0.0, timeout=600.0,
+                    mapper='hector'),
     'pioneer': dict(launch=['pioneer_2dnav', 'explore.launch'], model='pioneer',
                     walls=os.path.join(ROOT, 'src', 'pioneer_sim', 'config', 'pioneer_maze_walls.yaml'),
-                    inscribed=0.2, outline=(0.44, 0.38, -0.045), laser_range=30.0, rtf=4.0, timeout=1500.0),
+                    inscribed=0.2, outline=(0.44, 0.38, -0.045), laser_range=30.0, rtf=10.0, timeout=1500.0,
+                    mapper='gmapping'),
 }
 DEFAULT_START = {'m_robot': (0.0, 0.0), 'pioneer': (-3.2, -3.2)}
 
@@ -66,7 +69,7 @@ def draw_starts(robot, count, seed):
              round(rng.uniform(-math.pi, math.pi), 3)) for k in picks]
 
 
-def one_run(name, explorer, start, rtf, procs):
+def one_run(name, explorer, start, rtf, mapper, procs):
     """Explores once; prints a RESULT line (json) for the parent."""
     import rospy
     robot = ROBOTS[name]
@@ -74,11 +77,15 @@ def one_run(name, explorer, start, rtf, procs):
     walls = load_walls(robot['walls'])
     area = ReachableArea(walls, robot['inscribed'], (x, y))
     launch = robot['launch'] + ['explorer:=' + explorer, 'x:=%g' % x, 'y:=%g' % y, 'yaw:=%g' % yaw]
+    if name == 'pioneer':  # explore.launch's choice of mapper
+        launch = launch + ['mapper:=' + mapper]
+    # hector_mapping's map frame starts at the spawn pose; slam_gmapping's is the world's.
+    map_in_world = (0.0, 0.0, 0.0) if mapper == 'gmapping' else (x, y, yaw)
     master = launch_on_private_master(procs, 'bench_exploration', launch, node=False)
     master.setParam('/use_sim_time', True)
     rospy.init_node('bench_exploration', anonymous=True, disable_signals=True)
     wait_until(lambda: rosgraph_service_up(master, '/gazebo/set_physics_properties'), 90, 'the simulator', procs)
-    watch = Watch(area, walls, (x, y, yaw), '/%s/status' % explorer, robot['model'], robot['outline'],
+    watch = Watch(area, walls, map_in_world, '/%s/status' % explorer, robot['model'], robot['outline'],
                   robot['laser_range'])
     wait_until(lambda: watch.status.startswith('exploring'), 120, 'the first exploration goal', procs)
     set_real_time_factor(rtf)
@@ -91,7 +98,7 @@ def one_run(name, explorer, start, rtf, procs):
     sim, wall = rospy.get_time() - sim0, time.monotonic() - wall0
     time.sleep(1.0)  # the last map
     t95 = watch.time_to(0.95)
-    precision, mean, coverage, _ = watch.map_accuracy((x, y, yaw))
+    precision, mean, coverage, _ = watch.map_accuracy(map_in_world)
     if os.environ.get('BENCH_KEEP_LOGS'):  # the map and path, to look at with the logs
         subprocess.run(['rosrun', 'hector_style_mapping', 'save_map', '-f', os.path.join(procs.log_dir, 'map')],
                        env=os.environ, stdout=subprocess.DEVNULL)
@@ -106,7 +113,7 @@ def median(values):
     return statistics.median(values) if values else float('nan')
 
 
-def bench(name, explorer, starts, seed, rtf):
+def bench(name, explorer, starts, seed, rtf, mapper):
     robot = ROBOTS[name]
     walls = load_walls(robot['walls'])
     runs = []
@@ -114,7 +121,7 @@ def bench(name, explorer, starts, seed, rtf):
         area = ReachableArea(walls, robot['inscribed'], start[:2])
         tour, _ = best_tour(area, walls, start[:2], robot['laser_range'])
         out = subprocess.run([sys.executable, os.path.abspath(__file__), '--robot', name, '--explorer', explorer,
-                              '--rtf', str(rtf), '--one'] + [str(v) for v in start],
+                              '--rtf', str(rtf), '--mapper', mapper, '--one'] + [str(v) for v in start],
                              stdout=subprocess.PIPE, text=True)
         line = next((ln for ln in out.stdout.splitlines() if ln.startswith('RESULT ')), None)
         if line is None:
@@ -144,6 +151,11 @@ def bench(name, explorer, starts, seed, rtf):
     return 0 if good == len(runs) else 1
 
 
+def mapper_of(name, requested):
+    """m_robot maps with hector_mapping (it has no odometry); the Pioneer with the one asked for."""
+    return (requested or ROBOTS[name]['mapper']) if name == 'pioneer' else ROBOTS[name]['mapper']
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
     parser.add_argument('--robot', choices=sorted(ROBOTS), help='one robot (default: both)')
@@ -151,19 +163,24 @@ def main():
     parser.add_argument('--starts', type=int, default=10, help='start poses per robot (default 10)')
     parser.add_argument('--seed', type=int, default=1, help='the starts\' random seed (default 1)')
     parser.add_argument('--rtf', type=float, help='target real-time factor (default: the robot\'s, 0 = as fast as it goes)')
+    parser.add_argument('--mapper', choices=['gmapping', 'hector'],
+                        help='the Pioneer\'s mapper: slam_gmapping (default) or hector_mapping (m_robot: always hector)')
     parser.add_argument('--one', type=float, nargs=3, metavar=('X', 'Y', 'YAW'), help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.one:
         rtf = ROBOTS[args.robot]['rtf'] if args.rtf is None else args.rtf
+        mapper = mapper_of(args.robot, args.mapper)
         return run_with_processes('bench_exploration', lambda procs: one_run(args.robot, args.explorer, args.one, rtf,
-                                                                              procs))
+                                                                              mapper, procs))
     status = 0
     for name in [args.robot] if args.robot else sorted(ROBOTS):
         for explorer in [args.explorer] if args.explorer else ['find_frontier', 'explore']:
             rtf = ROBOTS[name]['rtf'] if args.rtf is None else args.rtf
-            print('command: scripts/bench_exploration.py --robot %s --explorer %s --starts %d --seed %d --rtf %g' % (
-                name, explorer, args.starts, args.seed, rtf), flush=True)
-            status |= bench(name, explorer, args.starts, args.seed, rtf)
+            mapper = mapper_of(name, args.mapper)
+            print('command: scripts/bench_exploration.py --robot %s --explorer %s --starts %d --seed %d --rtf %g%s' % (
+                name, explorer, args.starts, args.seed, rtf, ' --mapper ' + mapper if name == 'pioneer' else ''),
+                flush=True)
+            status |= bench(name, explorer, args.starts, args.seed, rtf, mapper)
     return status
 
 

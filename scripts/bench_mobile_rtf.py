@@ -12,7 +12,7 @@ brought up by its own launch file, headless, on a private roscore, while it driv
 The laser and the camera are subscribed (they only work with a reader, as in Gazebo). For each
 robot: the factor at the world's real_time_factor 1, unthrottled (max_update_rate 0), and
 unthrottled with the camera unsubscribed (what the camera costs). Reuses bench_node_rtf.py's
-process handling and /clock recorder. Output lines (parsed by scripts/bench):
+process handling and its C++ /clock and scan listener (the images are counted here). Output lines (parsed by scripts/bench):
   mobile real-time factor (<robot>, real time): X
   mobile real-time factor (<robot>, unthrottled): Y
   mobile real-time factor (<robot>, unthrottled, no camera): Z
@@ -25,8 +25,8 @@ import threading
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_node_rtf import (Recorder, each_robot_in_its_own_process, launch_on_private_master,  # noqa: E402
-                            measure, rosgraph_service_up, run_with_processes, unthrottle, wait_until)
+from bench_node_rtf import (ArrivalListener, each_robot_in_its_own_process, launch_on_private_master,  # noqa: E402
+                            measure, rosgraph_service_up, run_with_processes, unthrottle, wait_until, wall_window)
 
 # name, launch, model, cmd_vel, scan, image
 ROBOTS = [
@@ -68,9 +68,7 @@ def bench(robot, launch, model, cmd_vel, scan_topic, image_topic, seconds, procs
     get_state = rospy.ServiceProxy('/gazebo/get_model_state', GetModelState)
     wait_until(lambda: get_state(model_name=model).success, 60, 'model %s spawned' % model, procs)
 
-    rec, images = Recorder(), ImageCounter()
-    subs = [rospy.Subscriber('/clock', rospy.AnyMsg, rec.on_clock, queue_size=1000, tcp_nodelay=True),
-            rospy.Subscriber(scan_topic, rospy.AnyMsg, rec.on_scan, queue_size=1000, tcp_nodelay=True)]
+    listener, images = ArrivalListener(procs, robot, scan_topic), ImageCounter()
     image_sub = rospy.Subscriber(image_topic, rospy.AnyMsg, images.on_image, queue_size=10, tcp_nodelay=True)
     # A slow circle, so that the wheels, contacts and sensors all have work to do.
     cmd = rospy.Publisher(cmd_vel, Twist, queue_size=1)
@@ -84,31 +82,29 @@ def bench(robot, launch, model, cmd_vel, scan_topic, image_topic, seconds, procs
             time.sleep(0.05)
     driver = threading.Thread(target=drive, daemon=True)
     driver.start()
+    listener.wait_ready()
     time.sleep(2.0)
 
-    def timed(label):
-        start = time.monotonic()
-        r = measure(rec, seconds, label)
-        clock, _ = rec.window(start, start + seconds)
-        r['image_hz_sim'], r['image_hz_wall'] = images.rate(start, start + seconds, clock[0][1], clock[-1][1])
-        return r
-
-    results = [timed('real time')]
+    windows = [wall_window('real time', seconds)]
     unthrottle()
     time.sleep(1.0)
-    results.append(timed('unthrottled'))
+    windows.append(wall_window('unthrottled', seconds))
     image_sub.unregister()
     time.sleep(1.0)
-    results.append(timed('unthrottled, no camera'))
+    windows.append(wall_window('unthrottled, no camera', seconds))
     stop.set()
+    arrivals = listener.stop()
+    results = []
+    for label, start, end in windows:
+        r = measure(arrivals, start, end, label)
+        r['image_hz_sim'], r['image_hz_wall'] = images.rate(start, end, *r['sim_span'])
+        results.append(r)
     for r in results:
         print('mobile real-time factor (%s, %s): %.2f' % (robot, r['label'], r['rtf']))
         print('  %.2f s sim in %.2f s wall; laser %.1f Hz sim time (%.1f Hz wall); camera %.1f Hz sim time '
               '(%.1f Hz wall)' % (r['sim'], r['wall'], r['scan_hz_sim'], r['scan_hz_wall'], r['image_hz_sim'],
                                   r['image_hz_wall']))
     sys.stdout.flush()
-    for s in subs:
-        s.unregister()
     procs.stop_all()
 
 

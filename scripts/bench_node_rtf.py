@@ -113,6 +113,31 @@ class Arrivals:
                 by_kind[kind].append((float(wall), float(stamp)))
 
 
+class ArrivalListener:
+    """bullet_sim/topic_arrivals in a process of its own, recording /clock and, when given, a scan
+    and a joint-state topic; stop() returns what it recorded as Arrivals."""
+
+    def __init__(self, procs, name, scan_topic=None, joint_states_topic=None):
+        self.procs, self.file = procs, os.path.join(procs.log_dir, name + '_arrivals.txt')
+        self.proc = procs.start(name + '_listener', ['rosrun', 'bullet_sim', 'topic_arrivals', self.file,
+                                                     scan_topic or '-', joint_states_topic or '-'], os.environ)
+
+    def wait_ready(self):
+        wait_until(lambda: os.path.exists(self.file + '.ready'), 30, 'a first message on each recorded topic',
+                   self.procs)
+
+    def stop(self):
+        self.procs.stop(self.proc)  # it writes what it recorded as it exits
+        return Arrivals(self.file)
+
+
+def wall_window(label, seconds):
+    """(label, start, end): `seconds` of wall time from now, slept through."""
+    start = time.monotonic()
+    time.sleep(seconds)
+    return label, start, time.monotonic()
+
+
 def measure(arrivals, start, end, label):
     """The real-time factor and topic rates over the wall-time window [start, end]."""
     clock = [c for c in arrivals.clock if start <= c[0] <= end]
@@ -127,6 +152,7 @@ def measure(arrivals, start, end, label):
     in_span = [s for s in scans if clock[0][1] < s[1] <= clock[-1][1]]
     joint_states = [j for j in arrivals.joint_states if clock[0][1] < j[1] <= clock[-1][1]]
     return {'label': label, 'rtf': rtf, 'wall': wall, 'sim': sim, 'clock_msgs': len(clock),
+            'sim_span': (clock[0][1], clock[-1][1]),
             'scans': len(scans), 'scan_hz_sim': len(in_span) / sim if sim > 0 else 0.0,
             'scan_hz_wall': len(scans) / (end - start),
             'joint_states_hz_sim': len(joint_states) / sim if sim > 0 else 0.0}

@@ -2,12 +2,16 @@
 // SCAN_TOPIC goes through the node's own steps (tf from the bag for the laser's pose, scanToPoints,
 // SlamProcessor::update), timed as the node times them.
 //
-//   bench_mapping_bag BAG SCAN_TOPIC BASE_FRAME [--truth ODOM_TOPIC] [_param:=value ...]
+//   bench_mapping_bag BAG SCAN_TOPIC BASE_FRAME [--truth ODOM_TOPIC] [--poses CSV] [--map PGM]
+//                     [_param:=value ...]
 //
 // With --truth, ODOM_TOPIC (nav_msgs/Odometry of the base in a fixed frame, e.g. a drive plugin's
 // odometrySource world) is the ground truth: the mapper's poses are compared with it at their
 // stamps, in the map frame (the truth at the first scan), and the errors are printed too:
 //   accuracy: N poses, RMS X mm Y deg, max X mm Y deg, final X mm Y deg
+// --poses writes each scan's stamp, the mapper's pose and the truth at that stamp (nan without one),
+//   "t,x,y,theta,truth_x,truth_y,truth_theta", for other error measures (scripts/bench_radish.py);
+// --map writes the final map's known part as a PGM (occupied 0, free 254, unknown 205, as map_server).
 //
 // The _param:=value pairs are the node's map and filter parameters (map_resolution, map_size,
 // map_start_x, map_start_y, map_multi_res_levels, update_factor_free, update_factor_occupied,
@@ -20,6 +24,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -124,21 +130,60 @@ void printAccuracy(const std::vector<StampedPose>& truth, const std::vector<Stam
               deg * max_a, 1e3 * last_d, deg * last_a);
 }
 
+void writePoses(const std::string& path, const std::vector<StampedPose>& truth, const std::vector<StampedPose>& slam) {
+  std::ofstream out(path);
+  out << "t,x,y,theta,truth_x,truth_y,truth_theta\n";
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  char line[256];
+  for (const StampedPose& p : slam) {
+    hector_style_mapping::Pose2D at{nan, nan, nan};
+    truthAt(truth, p.t, &at);
+    std::snprintf(line, sizeof line, "%.6f,%.5f,%.5f,%.6f,%.5f,%.5f,%.6f\n", p.t, p.pose.x, p.pose.y, p.pose.theta,
+                  at.x, at.y, at.theta);
+    out << line;
+  }
+  if (!out) std::fprintf(stderr, "bench_mapping_bag: could not write %s\n", path.c_str());
+}
+
+// The bounding box of the known cells, as a map_server PGM (top row = largest y).
+void writeMap(const std::string& path, const hector_style_mapping::OccupancyGridMap& map) {
+  int x0 = map.sizeX(), y0 = map.sizeY(), x1 = -1, y1 = -1;
+  for (int y = 0; y < map.sizeY(); ++y)
+    for (int x = 0; x < map.sizeX(); ++x)
+      if (!map.isUnknown(x, y)) x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+  if (x1 < 0) x0 = y0 = x1 = y1 = 0;
+  std::ofstream out(path, std::ios::binary);
+  out << "P5\n" << (x1 - x0 + 1) << " " << (y1 - y0 + 1) << "\n255\n";
+  for (int y = y1; y >= y0; --y)
+    for (int x = x0; x <= x1; ++x)
+      out.put(static_cast<char>(map.isUnknown(x, y) ? 205 : map.isOccupied(x, y) ? 0 : 254));
+  if (!out) std::fprintf(stderr, "bench_mapping_bag: could not write %s\n", path.c_str());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 4) {
-    std::fprintf(stderr, "usage: bench_mapping_bag BAG SCAN_TOPIC BASE_FRAME [--truth ODOM_TOPIC] [_param:=value ...]\n");
+    std::fprintf(stderr, "usage: bench_mapping_bag BAG SCAN_TOPIC BASE_FRAME [--truth ODOM_TOPIC] [--poses CSV] "
+                         "[--map PGM] [_param:=value ...]\n");
     return 2;
   }
   const std::string bag_path = argv[1], scan_topic = argv[2], base_frame = argv[3];
   MapperOptions options;
   ScanFilter filter;
-  std::string truth_topic;
+  std::string truth_topic, poses_path, map_path;
   for (int i = 4; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--truth" && i + 1 < argc) {
       truth_topic = argv[++i];
+      continue;
+    }
+    if (arg == "--poses" && i + 1 < argc) {
+      poses_path = argv[++i];
+      continue;
+    }
+    if (arg == "--map" && i + 1 < argc) {
+      map_path = argv[++i];
       continue;
     }
     const auto sep = arg.find(":=");
@@ -218,9 +263,9 @@ int main(int argc, char** argv) {
   std::printf("bag: %ld scans of %ld beams: mean %.3f ms, max %.3f ms per scan; final pose %.3f %.3f %.4f\n", scans,
               beams, total_ms / scans, max_ms, slam.pose().x, slam.pose().y, slam.pose().theta);
   std::printf("search: %d of %ld scans took the correlative search's pose\n", slam.searchWinCount(), scans);
-  if (!truth_topic.empty()) {
-    std::sort(truth.begin(), truth.end(), [](const StampedPose& a, const StampedPose& b) { return a.t < b.t; });
-    printAccuracy(truth, slam_poses);
-  }
+  std::sort(truth.begin(), truth.end(), [](const StampedPose& a, const StampedPose& b) { return a.t < b.t; });
+  if (!truth_topic.empty()) printAccuracy(truth, slam_poses);
+  if (!poses_path.empty()) writePoses(poses_path, truth, slam_poses);
+  if (!map_path.empty()) writeMap(map_path, slam.map().finest());
   return 0;
 }

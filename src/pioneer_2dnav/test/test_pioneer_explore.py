@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""The Pioneer explores its maze on its own (explore.launch: pioneer_navigation.launch and explore_lite's
-explore): explore reports completion, the map then knows at least 95 % of the maze's reachable
+"""The Pioneer explores its maze on its own (explore.launch: pioneer_navigation.launch with slam_gmapping,
+and explore_lite's explore): explore reports completion, the map then knows at least 95 % of the maze's reachable
 free area, the robot never touched a wall, every goal left room for the robot, and the map lines
 up with the walls."""
 import os
@@ -18,7 +18,7 @@ class PioneerExploreTest(ExplorationChecks, unittest.TestCase):
     WALLS = os.path.join(PIONEER_SIM, 'config', 'pioneer_maze_walls.yaml')
     OUTLINE = (0.44, 0.38)      # the top plate; the tyres reach 0.19 m either side
     OUTLINE_CENTRE_X = -0.045   # the plate's centre is behind the axle (base_link)
-    MAP_IN_WORLD = (-3.2, -3.2, 0.0)  # pioneer_world.launch's spawn pose: the map frame starts there
+    MAP_IN_WORLD = (0.0, 0.0, 0.0)  # slam_gmapping's map frame is the world's (explore.launch's mapper)
     START = (-3.2, -3.2)
     INSCRIBED = 0.2             # the padded footprint's (costmap_common_params.yaml)
     STATUS = '/explore/status'

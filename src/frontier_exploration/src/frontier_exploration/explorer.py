@@ -9,6 +9,12 @@
 - Goals that abort, are refused, or see no progress along their path for `progress_timeout` are
   blacklisted, and so are goals reached while their frontier is still there (going back would not
   reveal it either). A goal we preempt ourselves, or that someone else preempts, is not.
+- "Still there" is judged on a map made after the arrival: mappers publish every few seconds
+  (slam_gmapping every 5 s, and only once the robot has moved), and the map the robot arrives
+  with may not yet show what it saw on the way. Until a newer map comes (at most
+  `progress_timeout`), other frontiers are chosen, or the explorer waits. (A shorter wait, twice
+  the mapper's interval between maps, was tried: one of ten Pioneer explorations then ended at
+  61 %, and m_robot finished no sooner.)
 - A frontier given up on once is tried again when nothing else is left (a robot that was stuck
   may not be any more); twice, never.
 - "complete" when no frontier is left, or none that is reachable and not given up on twice.
@@ -61,6 +67,14 @@ class Target:
 
 
 @dataclass
+class Arrival:
+    """A reached goal whose frontier is judged on the first map made after `at`."""
+    number: int
+    middle: tuple
+    at: float               # s; None: unknown, the next map judges
+
+
+@dataclass
 class Decision:
     kind: str               # SEND, KEEP, COMPLETE or WAIT
     message: str
@@ -79,14 +93,16 @@ class Explorer:
         self.options = options or ExplorerOptions()
         self.blacklist = Blacklist(self.options.blacklist_radius)
         self.target = None
+        self.arrival = None      # the last reached goal, until a newer map shows whether its frontier is gone
         self.goals_sent = 0
         self.goals_reached = 0
         self.goals_failed = 0
 
     # --- what the node calls ------------------------------------------------------------------------
 
-    def plan(self, grid, robot_xy, now):
-        """The decision for this map and robot position at time `now` (s)."""
+    def plan(self, grid, robot_xy, now, map_time=None):
+        """The decision for this map and robot position at time `now` (s); `map_time` is when the map
+        was made (None: it is current)."""
         grid = grid.cropped_to_known()
         o = self.options
         reach = reachable_cells(grid, robot_xy, o.clearance, o.frontiers.free_threshold, o.frontiers.occupied_threshold)
@@ -98,12 +114,13 @@ class Explorer:
                                               'min_size': max(1, math.ceil(o.min_frontier_size / grid.resolution))})
         candidates = [Candidate(f, tuple(float(v) for v in grid.cell_to_world(*middle_cell(f))))
                       for f in find_frontiers(grid, robot_xy, frontier_options)]
-        note = ''
+        note = self._judge_arrival(grid, candidates, now, map_time)
         if self.target is not None:
-            kept, note = self._follow_target(grid, reach, candidates, robot_xy, now)
+            kept, dropped = self._follow_target(grid, reach, candidates, robot_xy, now)
             if kept:
                 return Decision(KEEP, 'heading for (%.2f, %.2f)' % self.target.goal[:2], self.target.goal,
-                                self.target.number, candidates, grid=grid)
+                                self.target.number, candidates, note, grid)
+            note = '; '.join(n for n in (note, dropped) if n)
         goal_cells = reach.mask & seen_round(grid, o.clearance)
         for c in candidates:
             c.strikes = self.blacklist.strikes(c.middle)
@@ -116,8 +133,13 @@ class Explorer:
                 c.goal = tuple(float(v) for v in grid.cell_to_world(*cell))
                 c.path_length = float(reach.distance[cell])
         reachable = [c for c in candidates if c.goal is not None and not c.blacklisted]
+        if self.arrival is not None:  # the reached goal's frontier, as a map from before the arrival shows it
+            reachable = [c for c in reachable if not self._near(c, self.arrival.middle, grid)]
         fewest = min((c.strikes for c in reachable), default=0)
         usable = [c for c in reachable if c.strikes == fewest]  # frontiers given up on once: when nothing else is left
+        if not usable and self.arrival is not None:
+            return Decision(WAIT, 'waiting for a map made after goal %d was reached' % self.arrival.number,
+                            candidates=candidates, note=note, grid=grid)
         if not usable:
             return Decision(COMPLETE, self._completion_message(candidates), candidates=candidates, note=note,
                             grid=grid)
@@ -130,23 +152,45 @@ class Explorer:
                         % (self.goals_sent, gx, gy, best.frontier.size, best.path_length),
                         self.target.goal, self.goals_sent, candidates, note, grid)
 
-    def finished(self, number, outcome):
-        """Goal `number` ended with `outcome` (SUCCEEDED, ABORTED, REJECTED, PREEMPTED or LOST).
-        Returns a message for the log, or None when the goal is no longer ours."""
+    def finished(self, number, outcome, now=None):
+        """Goal `number` ended with `outcome` (SUCCEEDED, ABORTED, REJECTED, PREEMPTED or LOST) at time
+        `now` (s; None: unknown). Returns a message for the log, or None when the goal is no longer ours."""
         target = self.target
         if target is None or number != target.number:
             return None
         self.target = None
         if outcome == PREEMPTED:
             return 'goal %d was preempted (not by us): choosing again' % number
-        self.blacklist.add(target.middle)
         if outcome == SUCCEEDED:
             self.goals_reached += 1
+            self.arrival = Arrival(number, target.middle, now)
             return 'goal %d reached' % number
+        self.blacklist.add(target.middle)
         self.goals_failed += 1
         return 'goal %d at (%.2f, %.2f) %s: its frontier is given up on' % (number, target.goal[0], target.goal[1], outcome)
 
     # --- the parts --------------------------------------------------------------------------------------
+
+    def _judge_arrival(self, grid, candidates, now, map_time):
+        """Once a map made after the last arrival is here (or progress_timeout has passed without
+        one), a frontier still at the reached goal's is given up on once. A note when it is."""
+        a = self.arrival
+        if a is None:
+            return ''
+        fresh = map_time is None or a.at is None or map_time > a.at
+        if not fresh and now - a.at <= self.options.progress_timeout:
+            return ''
+        self.arrival = None
+        if not any(self._near(c, a.middle, grid) for c in candidates):
+            return ''
+        self.blacklist.add(a.middle)
+        return 'goal %d was reached but its frontier is still there%s: it is given up on' % (
+            a.number, '' if fresh else ' (no newer map in %.0f s)' % self.options.progress_timeout)
+
+    def _near(self, candidate, point, grid):
+        """Whether a frontier cell of `candidate` lies within blacklist_radius of `point`."""
+        xy = np.asarray(grid.cell_to_world(candidate.frontier.rows, candidate.frontier.cols))
+        return bool(np.hypot(*(xy - np.asarray(point).reshape(2, 1))).min() <= self.options.blacklist_radius)
 
     def _follow_target(self, grid, reach, candidates, robot_xy, now):
         """(keep it?, a note on why not)."""
@@ -155,9 +199,7 @@ class Explorer:
         if cell is None or not reach.mask[cell]:
             self.target = None
             return False, 'goal %d is no longer reachable (the map has changed there)' % t.number
-        r = self.options.blacklist_radius
-        if not any(np.hypot(*(np.asarray(grid.cell_to_world(c.frontier.rows, c.frontier.cols))
-                              - np.asarray(t.middle).reshape(2, 1))).min() <= r for c in candidates):
+        if not any(self._near(c, t.middle, grid) for c in candidates):
             self.target = None
             return False, 'goal %d\'s frontier is explored' % t.number
         # Along the path: on a detour round a wall the straight line grows while the robot gets nearer.

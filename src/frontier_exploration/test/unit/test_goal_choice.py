@@ -208,15 +208,63 @@ def test_a_goal_reached_with_its_frontier_still_there_is_not_chosen_again():
     assert second.kind == SEND and math.dist(second.goal[:2], first.goal[:2]) > 0.5
 
 
+def east_alcove_seen(grid):
+    """east_and_north_openings() once the robot has looked through the east opening: a closed alcove."""
+    g = grid.values.copy()
+    g[10:30, 41:45] = F
+    g[9, 40:46] = g[30, 40:46] = O
+    g[10:30, 45] = O
+    return Grid(g, RES)
+
+
+def test_a_reached_goal_is_judged_on_a_map_made_after_the_arrival():
+    explorer = Explorer(OPTIONS)
+    grid = east_and_north_openings()
+    first = explorer.plan(grid, (0.5, 0.5), now=0.0, map_time=0.0)
+    assert explorer.finished(first.number, SUCCEEDED, now=10.0) == 'goal 1 reached'
+    # The map from before the arrival still shows the east frontier: not a strike, but not chosen.
+    stale = explorer.plan(grid, first.goal[:2], now=10.5, map_time=8.0)
+    assert stale.kind == SEND and grid.world_to_cell(*stale.goal[:2])[0] >= 37   # the north opening
+    assert len(explorer.blacklist) == 0 and stale.note == ''
+    # The next map shows what the robot saw on arrival: the east frontier is gone, nothing given up.
+    fresh = explorer.plan(east_alcove_seen(grid), stale.goal[:2], now=12.0, map_time=11.0)
+    assert fresh.kind == KEEP and fresh.number == stale.number
+    assert len(explorer.blacklist) == 0 and fresh.note == ''
+
+
+def test_a_frontier_still_there_on_a_map_made_after_the_arrival_is_given_up_once():
+    explorer = Explorer(OPTIONS)
+    grid = east_and_north_openings()
+    first = explorer.plan(grid, (0.5, 0.5), now=0.0, map_time=0.0)
+    explorer.finished(first.number, SUCCEEDED, now=10.0)
+    second = explorer.plan(grid, first.goal[:2], now=11.0, map_time=10.5)
+    assert second.note == 'goal 1 was reached but its frontier is still there: it is given up on'
+    assert explorer.blacklist.strikes(first.goal[:2]) == 1 and explorer.blacklist.strikes(second.goal[:2]) == 0
+    assert second.kind == SEND and grid.world_to_cell(*second.goal[:2])[0] >= 37
+
+
+def test_with_one_frontier_the_explorer_waits_for_a_newer_map_at_most_progress_timeout():
+    explorer = Explorer(OPTIONS)
+    g = east_and_north_openings().values.copy()
+    g[40, 25:35] = O                      # the north opening closed: the east frontier is the only one
+    grid = Grid(g, RES)
+    first = explorer.plan(grid, (0.5, 0.5), now=0.0, map_time=0.0)
+    explorer.finished(first.number, SUCCEEDED, now=10.0)
+    waiting = explorer.plan(grid, first.goal[:2], now=39.5, map_time=9.0)
+    assert waiting.kind == WAIT and waiting.message == 'waiting for a map made after goal 1 was reached'
+    assert len(explorer.blacklist) == 0
+    # No newer map within progress_timeout (30 s): judged on this one; tried once more, as the only frontier.
+    judged = explorer.plan(grid, first.goal[:2], now=40.5, map_time=9.0)
+    assert judged.note == ('goal 1 was reached but its frontier is still there (no newer map in 30 s): it is '
+                           'given up on')
+    assert judged.kind == SEND and explorer.blacklist.strikes(first.goal[:2]) == 1
+
+
 def test_when_the_frontier_is_explored_a_new_goal_is_chosen():
     explorer = Explorer(OPTIONS)
     grid = east_and_north_openings()
     explorer.plan(grid, (0.5, 0.5), now=0.0)
-    g = grid.values.copy()
-    g[10:30, 41:45] = F                   # beyond the east opening: a closed alcove, now seen
-    g[9, 40:46] = g[30, 40:46] = O
-    g[10:30, 45] = O
-    second = explorer.plan(Grid(g, RES), (0.6, 0.6), now=1.0)
+    second = explorer.plan(east_alcove_seen(grid), (0.6, 0.6), now=1.0)
     assert second.kind == SEND and second.number == 2
     assert second.note == "goal 1's frontier is explored" and second.message.startswith('goal 2: (')
 

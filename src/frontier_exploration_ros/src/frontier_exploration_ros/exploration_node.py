@@ -79,7 +79,7 @@ class ExplorationNode:
         self.goals = goals_factory(self.on_finished)
         self.period = 1.0 / planner_frequency if planner_frequency > 0 else 1.0
         self.lock = threading.Lock()
-        self.finished = []          # (number, outcome) not yet handled
+        self.finished = []          # (number, outcome, time) not yet handled
         self.wake = threading.Event()
         self.active = None          # the number of our goal move_base is working on
         self.state = None           # (kind, message) last reported
@@ -90,7 +90,7 @@ class ExplorationNode:
 
     def on_finished(self, number, outcome):
         with self.lock:
-            self.finished.append((number, outcome))
+            self.finished.append((number, outcome, rospy.get_time()))
         self.wake.set()
 
     def spin(self):
@@ -112,13 +112,13 @@ class ExplorationNode:
     def step(self, now):
         with self.lock:
             finished, self.finished = self.finished, []
-        for number, outcome in finished:
+        for number, outcome, at in finished:
             if number == self.active:
                 self.active = None
-            message = self.explorer.finished(number, outcome)
+            message = self.explorer.finished(number, outcome, at)
             if message:
                 (rospy.loginfo if outcome in ('succeeded', 'preempted') else rospy.logwarn)(message)
-        grid, frame = self.maps.grid()
+        grid, frame, made_at = self.maps.grid()
         if grid is None:
             return self.report(WAIT, 'waiting for a map on %s' % self.maps.topic)
         why = self.goals.ready()
@@ -130,7 +130,7 @@ class ExplorationNode:
         if self.explorer.options.clearance is None:  # move_base is up: its footprint is on the server
             self.explorer.options.clearance = robot_radius(self.move_base_ns)
             rospy.loginfo('goals keep %.2f m from walls (the robot\'s radius)' % self.explorer.options.clearance)
-        decision = self.explorer.plan(grid, xy, now)
+        decision = self.explorer.plan(grid, xy, now, made_at)
         if decision.note:
             rospy.loginfo(decision.note)
         if self.marker_pub is not None:

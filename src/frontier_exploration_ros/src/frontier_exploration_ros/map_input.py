@@ -1,5 +1,6 @@
 """The latest map (nav_msgs/OccupancyGrid), with map_msgs/OccupancyGridUpdate patches applied, as a
-frontier_exploration Grid."""
+frontier_exploration Grid, and when it was made: the map's stamp (its arrival when the stamp is 0),
+a patch's arrival."""
 import threading
 
 import numpy as np
@@ -16,19 +17,20 @@ class MapInput:
         self.values = None       # [row, col], int16
         self.info = None
         self.frame_id = None
+        self.made_at = None      # s
         self.topic = rospy.resolve_name(topic)
         rospy.Subscriber(topic, OccupancyGrid, self._on_map, queue_size=1)
         if updates_topic:
             rospy.Subscriber(updates_topic, OccupancyGridUpdate, self._on_update, queue_size=10)
 
     def grid(self):
-        """(Grid, frame id) of the latest map, or (None, None) before the first one."""
+        """(Grid, frame id, time made in s) of the latest map, or (None, None, None) before the first one."""
         with self.lock:
             if self.values is None:
-                return None, None
+                return None, None, None
             i = self.info
             return Grid(self.values.copy(), i.resolution, i.origin.position.x, i.origin.position.y,
-                        yaw_of_quaternion(i.origin.orientation)), self.frame_id
+                        yaw_of_quaternion(i.origin.orientation)), self.frame_id, self.made_at
 
     def _on_map(self, msg):
         i = msg.info
@@ -37,9 +39,11 @@ class MapInput:
         except ValueError as e:
             rospy.logwarn_throttle(10.0, '%s: ignoring a map that does not add up: %s' % (self.topic, e))
             return
+        made_at = msg.header.stamp.to_sec() or rospy.get_time()
         with self.lock:
             old = self.info
             self.values, self.info, self.frame_id = values, i, msg.header.frame_id.lstrip('/')
+            self.made_at = made_at
         if old is not None and (old.width, old.height, old.resolution, old.origin.position.x, old.origin.position.y) != (
                 i.width, i.height, i.resolution, i.origin.position.x, i.origin.position.y):
             rospy.loginfo('%s: the map is now %d x %d cells of %.3f m from (%.2f, %.2f) (was %d x %d from (%.2f, %.2f)); '
@@ -59,3 +63,4 @@ class MapInput:
                 return
             patch = np.asarray(msg.data, dtype=np.int16).reshape(msg.height, msg.width)
             self.values[msg.y:msg.y + msg.height, msg.x:msg.x + msg.width] = patch
+            self.made_at = rospy.get_time()
