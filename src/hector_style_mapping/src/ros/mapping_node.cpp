@@ -322,16 +322,18 @@ void MappingNode::publishMap() {
   const ros::Time now = ros::Time::now();
   trajectory_.header.stamp = now;
   trajectory_publisher_.publish(trajectory_);
-  // The map topics are latched: an unchanged map need not be converted and sent again.
-  if (slam_.mapUpdateCount() == published_map_updates_) return;
-  published_map_updates_ = slam_.mapUpdateCount();
-  nav_msgs::OccupancyGrid map;
-  map.header.stamp = now;
-  map.header.frame_id = options_.map_frame;
-  fillOccupancyGrid(slam_.map().finest(), &map);
-  map.info.map_load_time = now;
-  map_publisher_.publish(map);
-  map_metadata_publisher_.publish(map.info);
+  // As hector_mapping: the map goes out every map_pub_period with the current stamp, converted
+  // again only when it changed. The stamp tells subscribers the map is up to date at that time
+  // (an explorer waiting for a map made after its robot arrived, say).
+  if (slam_.mapUpdateCount() != published_map_updates_) {
+    published_map_updates_ = slam_.mapUpdateCount();
+    map_message_.header.frame_id = options_.map_frame;
+    fillOccupancyGrid(slam_.map().finest(), &map_message_);
+    map_message_.info.map_load_time = now;
+    map_metadata_publisher_.publish(map_message_.info);
+  }
+  map_message_.header.stamp = now;
+  map_publisher_.publish(map_message_);
 }
 
 bool MappingNode::dynamicMapService(nav_msgs::GetMap::Request&, nav_msgs::GetMap::Response& response) {

@@ -8,6 +8,7 @@
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/GetMap.h>
+#include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
@@ -84,7 +85,8 @@ class MappingNode {
   geometry_msgs::TransformStamped map_transform_;  // the last map -> odom (or -> base) sent
   bool have_map_transform_ = false;
   nav_msgs::Path trajectory_;
-  int published_map_updates_ = -1;  // SlamProcessor::mapUpdateCount() at the last map publication
+  int published_map_updates_ = -1;  // SlamProcessor::mapUpdateCount() when map_message_ was filled
+  nav_msgs::OccupancyGrid map_message_;  // the last map converted, re-sent with a new stamp while unchanged
   ScanPoints scan_points_;  // reused: no allocation per scan
   ScanTiming timing_;
 };
