@@ -1,11 +1,12 @@
 #!/usr/bin/python3
 """The mapper on real robot logs (issue 15): each Radish log in ../shared/datasets/radish (or --logs)
 goes through carmen_to_bag, then bench_mapping_bag (the node's steps without a master, no
-odometry), and per log this prints, in one run:
+odometry), and per log this prints, in one run, for the mapper as hector_mapping matches ("plain": from
+the last pose) and with our correlative search ("search": 1.6 m and 1.4 rad round the last pose):
 
-  <log>: N scans over D s; mapper mean X ms, max Y ms per scan (W s in all: S x the log's duration);
-         process W2 s (S2 x); absolute RMS A m after alignment (A0 m from the first scan), relative
-         mean R m, Q deg over P pairs about 1 s apart
+  <log> <plain|search>: N scans over D s; mapper mean X ms, max Y ms per scan (W s in all: S x the log's
+         duration); process W2 s (S2 x); absolute RMS A m after alignment (A0 m from the first scan),
+         relative mean R m, Q deg over P pairs about 1 s apart
 
 - absolute: the mapper's positions against the logged corrected poses after the rigid 2-D
   transform that fits them best (least squares, no scale), RMS; and, in brackets, with the map
@@ -20,9 +21,9 @@ closure), >= 200x the log's duration on one core.
 
   bench_radish.py [--logs DIR] [--out DIR] [--figures DIR] [_param:=value ...]
 
-_param:=value pairs go to bench_mapping_bag (e.g. _search_window_linear:=1.0). --out keeps the
-bags, the pose tables (CSV) and the maps (PGM); --figures writes <log>_map.png, the map beside the
-log's reference image.
+_param:=value pairs go to bench_mapping_bag for both runs (e.g. _search_motion_weight:=0). --out
+keeps the bags, the pose tables (CSV) and the maps (PGM); --figures writes radish_<log>_map.png, the
+map made with the search beside the log's reference image.
 """
 import argparse
 import csv
@@ -37,6 +38,10 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 DEFAULT_LOGS = os.path.join(os.path.dirname(ROOT), 'shared', 'datasets', 'radish')
 MAP_PARAMS = ['_map_resolution:=0.05', '_map_size:=2048']  # 102 m a side: either building from any start
+# Each log is mapped twice: as hector_mapping matches (from the last pose) and with our correlative search,
+# its window wide enough for the logs' scans (up to 1.5 m and 80 degrees apart).
+CONFIGS = [('plain', ['_search_window_linear:=0', '_search_window_angular:=0']),
+           ('search', ['_search_window_linear:=1.6', '_search_window_angular:=1.4'])]
 RELATIVE_GAP = 1.0  # s
 
 
@@ -109,7 +114,7 @@ def side_by_side(map_pgm, reference_png, title, path):
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(1, 2, figsize=(11, 5.5))
     axes[0].imshow(mpimg.imread(map_pgm), cmap='gray', vmin=0, vmax=255)
-    axes[0].set_title('%s: our hector_mapping, no odometry' % title)
+    axes[0].set_title('%s: our hector_mapping with the search, no odometry' % title)
     axes[1].imshow(mpimg.imread(reference_png), cmap='gray')
     axes[1].set_title('%s: reference (Radish, corrected)' % title)
     for ax in axes:
@@ -119,19 +124,18 @@ def side_by_side(map_pgm, reference_png, title, path):
     plt.close(fig)
 
 
-def bench_log(log, out, figures, params):
-    name = os.path.basename(log).split('-')[0]
-    bag, poses, pgm = (os.path.join(out, name + ext) for ext in ('.bag', '_poses.csv', '_map.pgm'))
-    subprocess.run(['rosrun', 'hector_style_mapping', 'carmen_to_bag', log, bag], check=True,
-                   stdout=subprocess.DEVNULL)
+def run_mapper(name, config, bag, out, params):
+    """Maps the bag with one configuration, prints its line; the map's PGM, or None if it failed."""
+    label, config_params = config
+    poses, pgm = (os.path.join(out, '%s_%s%s' % (name, label, ext)) for ext in ('_poses.csv', '_map.pgm'))
     command = [os.path.join(ROOT, 'devel', 'lib', 'hector_style_mapping', 'bench_mapping_bag'), bag, '/scan',
-               'base_link', '--truth', '/ground_truth', '--poses', poses, '--map', pgm] + MAP_PARAMS + params
+               'base_link', '--truth', '/ground_truth', '--poses', poses, '--map', pgm] + MAP_PARAMS + config_params + params
     start = time.monotonic()
     run = subprocess.run(command, stdout=subprocess.PIPE, text=True)
     process_seconds = time.monotonic() - start
     if run.returncode != 0:
-        print('%s: bench_mapping_bag failed (exit %d)' % (name, run.returncode), flush=True)
-        return False
+        print('%s %s: bench_mapping_bag failed (exit %d)' % (name, label, run.returncode), flush=True)
+        return None
     line = next(ln for ln in run.stdout.splitlines() if ln.startswith('bag: '))
     mean_ms = float(line.split('mean ')[1].split(' ms')[0])
     max_ms = float(line.split('max ')[1].split(' ms')[0])
@@ -139,16 +143,25 @@ def bench_log(log, out, figures, params):
     duration = rows[-1][0] - rows[0][0]
     mapper_seconds = mean_ms * len(rows) / 1e3
     rel_d, rel_a, pairs = relative_errors(rows)
-    print('%s: %d scans over %.0f s; mapper mean %.2f ms, max %.2f ms per scan (%.2f s in all: %.0f x the log\'s '
+    print('%s %s: %d scans over %.0f s; mapper mean %.2f ms, max %.2f ms per scan (%.2f s in all: %.0f x the log\'s '
           'duration); process %.2f s (%.0f x); absolute RMS %.2f m after alignment (%.2f m from the first scan), '
           'relative mean %.3f m, %.2f deg over %d pairs about %g s apart' % (
-              name, len(rows), duration, mean_ms, max_ms, mapper_seconds, duration / mapper_seconds,
+              name, label, len(rows), duration, mean_ms, max_ms, mapper_seconds, duration / mapper_seconds,
               process_seconds, duration / process_seconds, aligned_rms(rows), anchored_rms(rows), rel_d,
               math.degrees(rel_a), pairs, RELATIVE_GAP), flush=True)
+    return pgm
+
+
+def bench_log(log, out, figures, params):
+    name = os.path.basename(log).split('-')[0]
+    bag = os.path.join(out, name + '.bag')
+    subprocess.run(['rosrun', 'hector_style_mapping', 'carmen_to_bag', log, bag], check=True,
+                   stdout=subprocess.DEVNULL)
+    maps = [run_mapper(name, config, bag, out, params) for config in CONFIGS]
     reference = log.replace('.log.gz', '.png').replace('.log', '.png')
-    if figures and os.path.exists(reference):
-        side_by_side(pgm, reference, name, os.path.join(figures, 'radish_%s_map.png' % name))
-    return True
+    if figures and maps[-1] and os.path.exists(reference):
+        side_by_side(maps[-1], reference, name, os.path.join(figures, 'radish_%s_map.png' % name))
+    return all(maps)
 
 
 def main():

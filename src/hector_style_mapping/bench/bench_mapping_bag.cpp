@@ -16,6 +16,7 @@
 // The _param:=value pairs are the node's map and filter parameters (map_resolution, map_size,
 // map_start_x, map_start_y, map_multi_res_levels, update_factor_free, update_factor_occupied,
 // map_update_distance_thresh, map_update_angle_thresh, search_window_linear, search_window_angular,
+// search_motion_weight,
 // laser_min_dist, laser_max_dist,
 // laser_z_min_value, laser_z_max_value). Prints one line scripts/bench_mapping.py reads:
 //   bag: N scans of B beams: mean X ms, max Y ms per scan; final pose x y theta
@@ -53,6 +54,7 @@ bool setParameter(const std::string& name, const std::string& value, MapperOptio
       {"map_update_distance_thresh", &m->map_update_distance_thresh},
       {"map_update_angle_thresh", &m->map_update_angle_thresh},
       {"search_window_linear", &m->search_window_linear}, {"search_window_angular", &m->search_window_angular},
+      {"search_motion_weight", &m->search_motion_weight},
       {"laser_min_dist", &f->laser_min_dist},
       {"laser_max_dist", &f->laser_max_dist}, {"laser_z_min_value", &f->laser_z_min_value},
       {"laser_z_max_value", &f->laser_z_max_value}};
@@ -262,7 +264,7 @@ int main(int argc, char** argv) {
   }
   std::printf("bag: %ld scans of %ld beams: mean %.3f ms, max %.3f ms per scan; final pose %.3f %.3f %.4f\n", scans,
               beams, total_ms / scans, max_ms, slam.pose().x, slam.pose().y, slam.pose().theta);
-  std::printf("search: %d of %ld scans took the correlative search's pose\n", slam.searchWinCount(), scans);
+  std::printf("search: %d of %ld scans matched by the correlative search\n", slam.searchCount(), scans);
   std::sort(truth.begin(), truth.end(), [](const StampedPose& a, const StampedPose& b) { return a.t < b.t; });
   if (!truth_topic.empty()) printAccuracy(truth, slam_poses);
   if (!poses_path.empty()) writePoses(poses_path, truth, slam_poses);

@@ -1,7 +1,7 @@
 #ifndef HECTOR_STYLE_MAPPING_CORRELATIVE_SEARCH_H
 #define HECTOR_STYLE_MAPPING_CORRELATIVE_SEARCH_H
 
-#include "hector_style_mapping/occupancy_grid_map.h"
+#include "hector_style_mapping/likelihood_field.h"
 #include "hector_style_mapping/pose_2d.h"
 #include "hector_style_mapping/scan_points.h"
 
@@ -13,21 +13,31 @@ struct SearchWindow {
   double angular = 0.0;  // rad
 };
 
-struct SearchResult {
-  Pose2D pose;          // the best pose found (the centre when nothing scores)
-  double score = 0.0;   // its mean map value per scan point, 0..1
-  long candidates = 0;  // poses scored
+// A preference for translations near an expected position, where the scan cannot tell places apart (along a
+// featureless corridor every position fits about as well): a candidate's score pays `weight` per metre it lies
+// from `expected` (map frame). Weight 0: no preference.
+struct TranslationPrior {
+  Eigen::Vector2d expected{0.0, 0.0};
+  double weight = 0.0;  // mean field value per metre
 };
 
-// Exhaustive correlative search (Olson, "Real-time correlative scan matching", ICRA 2009, in its
-// brute-force form): every pose of a grid round `centre`, translations one cell of `map` apart and
-// rotations such that the farthest scan point moves about one cell, is scored by the mean matching
-// value (occupancy probability, 0 where unknown) of the cells the scan's points fall in. Gauss-Newton
-// then refines the winner: the search only has to land in its basin, which a local match from a
-// poor prediction (a robot that moved half a metre and turned twenty degrees since the last scan)
-// misses. Ties go to the candidate nearest the centre. Cost: candidates x points cell reads.
-SearchResult correlativeSearch(const OccupancyGridMap& map, const ScanPoints& scan, const Pose2D& centre,
-                               const SearchWindow& window);
+struct SearchResult {
+  Pose2D pose;          // the best pose found (the centre when nothing scores)
+  double score = 0.0;   // its mean field value per scan point, -1..1 (LikelihoodField)
+  long candidates = 0;  // poses scored, blocks of the branch and bound included
+  double angle_step = 0.0;  // rad between the rotations searched
+};
+
+// Correlative search (Olson, "Real-time correlative scan matching", ICRA 2009): the pose within `window` of
+// `centre` whose scan points have the highest mean value in `field`. Rotations are stepped so that the farthest
+// points (the 95th percentile of ranges) move by LikelihoodField::kSigma; at each, translations one cell apart
+// are searched exactly by branch and bound over the field's blocks (as Cartographer's fast correlative matcher
+// does), so a window of metres costs a fraction of the brute-force search. The winner is then refined by brute
+// force over a finer grid (a fifth of a cell, a quarter of a rotation step) on the interpolated field.
+// With a prior, the grid's winner is the best score less the prior's cost (the refinement does not pay it: it
+// moves by less than a cell). Ties go to the candidate nearest the centre. The scan's free_rays are not read.
+SearchResult correlativeSearch(const LikelihoodField& field, const ScanPoints& scan, const Pose2D& centre,
+                               const SearchWindow& window, const TranslationPrior& prior = TranslationPrior{});
 
 }  // namespace hector_style_mapping
 

@@ -17,12 +17,16 @@ struct MapperOptions {
   double update_factor_occupied = 0.9;      // probability a hit stands for
   double map_update_distance_thresh = 0.4;  // m the pose must move before the map is updated again
   double map_update_angle_thresh = 0.9;     // rad the pose must turn before the map is updated again
-  // Ours, not hector_mapping's: the constant-velocity prediction and the correlative search round it
-  // (see SlamProcessor::update). The search's half-widths grow with the time since the last scan
-  // and stop at these. Off (0) by default: on Radish's real logs it does not yet hold the pose
-  // (docs/MAPPING.md); e.g. 1.0 m and 0.6 rad for scans far apart.
+  // Ours, not hector_mapping's: the correlative search (SlamProcessor::update, correlativeSearch). Above 0, each
+  // scan is searched for within these half-widths round the last pose (or the guess), against the last few
+  // scans; off (0) by default, as hector_mapping. For scans far apart without odometry (Radish's logs: 0.5-1 m
+  // and up to 60 degrees between scans) 1.6 m and 1.4 rad; docs/MAPPING.md, "Real logs".
   double search_window_linear = 0.0;   // m
   double search_window_angular = 0.0;  // rad
+  // How much the search prefers the translation constant velocity (or the guess) predicts: a candidate pays this
+  // much mean field value (0..1: the share of points on a wall) per metre away from it. It only decides where
+  // the scan cannot, along a featureless corridor. 0.1: a metre off must put a tenth more of the points on walls.
+  double search_motion_weight = 0.1;   // per m
 };
 
 // The largest map_size validate() accepts: beyond it the finest level alone would need gigabytes.

@@ -1,8 +1,12 @@
 #ifndef HECTOR_STYLE_MAPPING_SLAM_PROCESSOR_H
 #define HECTOR_STYLE_MAPPING_SLAM_PROCESSOR_H
 
+#include <vector>
+
 #include <Eigen/Core>
 
+#include "hector_style_mapping/correlative_search.h"
+#include "hector_style_mapping/likelihood_field.h"
 #include "hector_style_mapping/mapper_options.h"
 #include "hector_style_mapping/multi_resolution_map.h"
 #include "hector_style_mapping/pose_2d.h"
@@ -30,35 +34,40 @@ class SlamProcessor {
   // Throws std::invalid_argument with validate()'s message if the options are not valid.
   explicit SlamProcessor(const MapperOptions& options);
 
-  // The fastest a robot the mapper serves plausibly moves and turns: with the time since the last
-  // scan, they size the correlative search's window (up to the options' search_window_*). Brisk
-  // walking pace and half a turn a second: more than the robots we know (a Pioneer 3-DX 1.2 m/s,
-  // a TurtleBot 0.7 m/s).
-  static constexpr double kPlausibleSpeed = 1.5;       // m/s
-  static constexpr double kPlausibleTurnRate = M_PI;   // rad/s
+  // The fastest a robot the mapper serves plausibly moves and turns: with the scan interval, they size the
+  // correlative search's window (up to the options' search_window_*). Brisk walking pace and half a turn a
+  // second: more than the robots we know (a Pioneer 3-DX 1.2 m/s, a TurtleBot 0.7 m/s).
+  static constexpr double kPlausibleSpeed = 1.5;      // m/s
+  static constexpr double kPlausibleTurnRate = M_PI;  // rad/s
+  // The scan interval is the median of this many recent ones, so that a log's odd stamps do not shrink it.
+  static constexpr std::size_t kRecentIntervals = 15;
+  // Scans the correlative search matches against: the last ones that updated the map.
+  static constexpr std::size_t kSearchedScans = 3;
 
   // Matches the scan from the coarsest level to the finest and updates every level of the map if this is the
   // first scan since construction / reset() or the matched pose moved more than map_update_distance_thresh or
   // turned more than map_update_angle_thresh since the last map update.
   //
-  // The match starts at `guess` (odometry, say) if given; otherwise, with the search on (the options'
-  // search_window_linear and _angular > 0) and `seconds_since_last_scan` > 0, at the pose the last motion
-  // predicts (the last scan-to-scan motion scaled to this interval: constant velocity), and otherwise at the last
-  // pose, as hector_mapping. With the search on and the interval known, a correlative
-  // search (correlativeSearch) on the coarsest level also looks for the scan round that start, over the motion
-  // the robot could plausibly have made in that time beyond the prediction (kPlausibleSpeed, kPlausibleTurnRate,
-  // capped by search_window_linear / _angular); the search's pose, refined, replaces the start's match when it
-  // fits the finest level better. On synthetic scans half a metre apart this keeps the pose; on Radish's real
-  // logs it does not yet (docs/MAPPING.md).
+  // The match starts at `guess` (odometry, say) if given, otherwise at the last pose, as hector_mapping. With
+  // the search on (the options' search_window_linear and _angular > 0), a correlative search (correlativeSearch)
+  // looks for the scan within a window round the start, against the field of the last kSearchedScans scans
+  // that updated the map, and Gauss-Newton on the finest level refines its pose (unless it strays further
+  // than the search's resolution: then the map has drifted from the recent scans, and the search's pose stands).
+  // Without it, Gauss-Newton goes from the start through the levels, coarsest first.
+  //
+  // The window: the motion a robot could plausibly make (kPlausibleSpeed, kPlausibleTurnRate) over the scan
+  // interval, capped by search_window_linear / _angular. The interval is the median of the recent
+  // `seconds_since_last_scan` (> 0; 0 when not known), not the last one: real logs' stamps are not to be trusted
+  // scan by scan (Radish's Intel log has scans 0.0 s apart with 30 degrees of turn between them). With none
+  // known, the whole configured window.
   //
   // A scan without finite points changes nothing (pose, covariance and map stay; mapUpdatedByLastScan() becomes
   // false), even when a guess is given. A guess with a non-finite field is ignored. Keep the scan's points in
   // beam order: the covariance's surface normals are fitted to neighbouring points.
   void update(const ScanPoints& scan, const Pose2D* guess = nullptr, double seconds_since_last_scan = 0.0);
 
-  // Updates whose pose came from the correlative search (it fitted better than the match from the predicted
-  // pose), since construction / the last reset(); for diagnostics.
-  int searchWinCount() const { return search_win_count_; }
+  // Scans matched by the correlative search since construction / the last reset(); for diagnostics.
+  int searchCount() const { return search_count_; }
 
   // The base frame's pose in the map frame after the last scan (the start pose before any).
   const Pose2D& pose() const { return pose_; }
@@ -90,6 +99,8 @@ class SlamProcessor {
 
  private:
   bool movedEnoughForMapUpdate() const;
+  // The search's window for this scan; records the interval.
+  SearchWindow searchWindow(double seconds_since_last_scan);
   // Gauss-Newton from `start` through every level, coarsest first; the finest level's match.
   ScanMatchResult matchThroughLevels(const ScanPoints& scan, const Pose2D& start) const;
 
@@ -102,10 +113,13 @@ class SlamProcessor {
   ScanMatchResult last_match_;
   bool map_updated_by_last_scan_ = false;
   int map_update_count_ = 0;
-  // The motion between the last two matched scans and the time it took (0: none yet).
-  Pose2D last_motion_;
-  double last_motion_seconds_ = 0.0;
-  int search_win_count_ = 0;
+  int search_count_ = 0;
+  Pose2D previous_pose_;  // pose() before the last scan: with it, the search's prior
+  std::vector<double> recent_intervals_;  // s, the last kRecentIntervals known ones
+  // The last kSearchedScans scans that updated the map, and the search's field built from them (on demand).
+  std::vector<PlacedScan> window_;
+  LikelihoodField field_;
+  bool field_stale_ = true;
 };
 
 // Gauss-Newton from `start` through every level of `map`, coarsest first, with SlamProcessor's iteration caps;

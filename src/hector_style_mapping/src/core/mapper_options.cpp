@@ -83,6 +83,9 @@ std::string validate(const MapperOptions& options) {
   if (!(options.search_window_angular >= 0.0 && options.search_window_angular <= M_PI)) {
     complaints.add("search_window_angular", "in [0, pi] (rad; 0 turns the search off)", options.search_window_angular);
   }
+  if (!(options.search_motion_weight >= 0.0 && std::isfinite(options.search_motion_weight))) {
+    complaints.add("search_motion_weight", ">= 0 and finite (per m; 0: no motion prior)", options.search_motion_weight);
+  }
   return complaints.joined();
 }
 

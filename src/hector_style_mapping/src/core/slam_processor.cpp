@@ -34,14 +34,16 @@ SlamProcessor::SlamProcessor(const MapperOptions& options) : options_(options), 
 void SlamProcessor::reset(const Pose2D& start) {
   map_.clear();
   pose_ = {start.x, start.y, normalizeAngle(start.theta)};
+  previous_pose_ = pose_;
   last_map_update_pose_ = pose_;
   covariance_.setZero();
   last_match_ = ScanMatchResult{};
   map_updated_by_last_scan_ = false;
   map_update_count_ = 0;
-  last_motion_ = Pose2D{};
-  last_motion_seconds_ = 0.0;
-  search_win_count_ = 0;
+  search_count_ = 0;
+  window_.clear();
+  field_stale_ = true;
+  recent_intervals_.clear();
 }
 
 ScanMatchResult matchThroughLevels(const ScanMatcher& matcher, const MultiResolutionMap& map, const ScanPoints& scan,
@@ -69,49 +71,64 @@ void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double s
   const bool guess_usable =
       guess != nullptr && std::isfinite(guess->x) && std::isfinite(guess->y) && std::isfinite(guess->theta);
   const bool search = options_.search_window_linear > 0.0 && options_.search_window_angular > 0.0;
-  const double dt =
-      search && std::isfinite(seconds_since_last_scan) ? std::max(seconds_since_last_scan, 0.0) : 0.0;
-  Pose2D start = pose_;
-  if (guess_usable) {
-    start = *guess;
-  } else if (dt > 0.0 && last_motion_seconds_ > 0.0) {
-    // Constant velocity, capped at twice the last interval's motion (a scan or two dropped).
-    const double f = std::min(dt / last_motion_seconds_, 2.0);
-    start = compose(pose_, Pose2D{f * last_motion_.x, f * last_motion_.y, f * last_motion_.theta});
-  }
-  last_match_ = matchThroughLevels(scan, start);
-
-  const SearchWindow window{std::min(kPlausibleSpeed * dt, options_.search_window_linear),
-                            std::min(kPlausibleTurnRate * dt, options_.search_window_angular)};
-  if (map_update_count_ > 0 && window.linear > 0.0 && window.angular > 0.0) {
-    const SearchResult found = correlativeSearch(map_.level(map_.levels() - 1), scan, start, window);
-    const bool moved = found.pose.x != start.x || found.pose.y != start.y || found.pose.theta != start.theta;
-    if (moved) {  // else its refinement is the match just made
-      const ScanMatchResult refined = matchThroughLevels(scan, found.pose);
-      // Per point, and ties to the prediction's match.
-      const double residual = last_match_.squared_residual_sum / std::max(last_match_.point_count, 1);
-      const double refined_residual = refined.squared_residual_sum / std::max(refined.point_count, 1);
-      if (refined.point_count > 0 && refined_residual < 0.99 * residual) {
-        last_match_ = refined;
-        ++search_win_count_;
-      }
+  const Pose2D start = guess_usable ? *guess : pose_;
+  if (search && !window_.empty()) {
+    // The search decides where the scan fits the recent scans best.
+    if (field_stale_) {
+      field_.build(window_);
+      field_stale_ = false;
     }
+    // The guess, or else constant velocity per scan, for the translation: along a featureless corridor it
+    // decides.
+    const Eigen::Vector2d expected = guess_usable ? Eigen::Vector2d(guess->x, guess->y)
+                                                  : Eigen::Vector2d(2.0 * pose_.x - previous_pose_.x,
+                                                                    2.0 * pose_.y - previous_pose_.y);
+    const TranslationPrior prior{expected, options_.search_motion_weight};
+    const SearchResult found =
+        correlativeSearch(field_, scan, start, searchWindow(seconds_since_last_scan), prior);
+    // Gauss-Newton on the finest level then settles it on the whole map, unless it wanders off further than
+    // the search's own resolution: then the map disagrees with the recent scans (drift), and they know better.
+    last_match_ = matcher_.matchWithDetails(map_.finest(), scan, found.pose, kFinestLevelIterations);
+    if (std::hypot(last_match_.pose.x - found.pose.x, last_match_.pose.y - found.pose.y) >
+            LikelihoodField::kResolution ||
+        std::abs(angleDifference(last_match_.pose.theta, found.pose.theta)) > found.angle_step) {
+      last_match_ = matcher_.matchWithDetails(map_.finest(), scan, found.pose, 0);
+    }
+    ++search_count_;
+  } else {
+    last_match_ = matchThroughLevels(scan, start);
   }
 
-  const Pose2D previous = pose_;
+  previous_pose_ = pose_;
   pose_ = last_match_.pose;
-  if (dt > 0.0) {
-    last_motion_ = between(previous, pose_);
-    last_motion_seconds_ = dt;
-  }
   covariance_ = matchCovariance(last_match_, matcher_.surfaceNormalHessian(map_.finest(), scan, pose_));
 
   map_updated_by_last_scan_ = map_update_count_ == 0 || movedEnoughForMapUpdate();
   if (map_updated_by_last_scan_) {
     map_.updateByScan(scan, pose_);
     last_map_update_pose_ = pose_;
+    if (search) {
+      window_.push_back({pose_, scan});
+      if (window_.size() > kSearchedScans) window_.erase(window_.begin());
+      field_stale_ = true;
+    }
     ++map_update_count_;
   }
+}
+
+SearchWindow SlamProcessor::searchWindow(double seconds_since_last_scan) {
+  if (seconds_since_last_scan > 0.0 && std::isfinite(seconds_since_last_scan)) {
+    recent_intervals_.push_back(seconds_since_last_scan);
+    if (recent_intervals_.size() > kRecentIntervals) recent_intervals_.erase(recent_intervals_.begin());
+  }
+  SearchWindow window{options_.search_window_linear, options_.search_window_angular};
+  if (recent_intervals_.empty()) return window;
+  std::vector<double> sorted = recent_intervals_;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2), sorted.end());
+  const double interval = sorted[sorted.size() / 2];
+  window.linear = std::min(window.linear, kPlausibleSpeed * interval);
+  window.angular = std::min(window.angular, kPlausibleTurnRate * interval);
+  return window;
 }
 
 bool SlamProcessor::movedEnoughForMapUpdate() const {

@@ -146,7 +146,7 @@ void MappingNode::scanCallback(const sensor_msgs::LaserScan::ConstPtr& scan) {
   const ros::Time stamp = scan->header.stamp;
   const ros::Time previous_stamp = scan_stamps_.last();
   if (!acceptStamp(stamp)) return;
-  // Sizes the correlative search's window; 0 (the first scan, a clock restart) turns it off.
+  // The scan rate sizes the correlative search's window; 0 (the first scan, a clock restart): not known.
   const double seconds_since_last_scan =
       !previous_stamp.isZero() && stamp > previous_stamp ? (stamp - previous_stamp).toSec() : 0.0;
   Eigen::Isometry3d laser_in_base = Eigen::Isometry3d::Identity();

@@ -49,6 +49,7 @@ void readAll(ParameterReader& r, NodeOptions* o) {
   r.read("map_update_angle_thresh", &o->mapper.map_update_angle_thresh);
   r.read("search_window_linear", &o->mapper.search_window_linear);
   r.read("search_window_angular", &o->mapper.search_window_angular);
+  r.read("search_motion_weight", &o->mapper.search_motion_weight);
 }
 
 }  // namespace

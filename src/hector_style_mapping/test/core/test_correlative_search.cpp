@@ -1,11 +1,13 @@
-// The correlative search on its own: a scan put back where it was taken, from far off.
+// The correlative search on its own: a scan put back where it was taken, from far off, and its branch and
+// bound against the brute-force search it stands for.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "hector_style_mapping/correlative_search.h"
-#include "hector_style_mapping/multi_resolution_map.h"
+#include "hector_style_mapping/likelihood_field.h"
 #include "synthetic_world.h"
 
 namespace hector_style_mapping {
@@ -13,57 +15,109 @@ namespace {
 
 constexpr double kDegree = M_PI / 180.0;
 
-struct Mapped {
-  MultiResolutionMap map{MapperOptions{}};
-  ScanPoints scan;
+struct Scene {
+  LikelihoodField field;
+  ScanPoints scan;  // taken at the truth, after the field's scans
 };
 
-// The small maze mapped from `truth`, and a second scan taken there.
-Mapped mappedAt(const Pose2D& truth) {
+// The small maze's field from two scans at `truth`, and a third scan taken there.
+Scene sceneAt(const Pose2D& truth) {
   const testing::SyntheticWorld world = testing::smallMaze();
   testing::LaserConfig laser;
   laser.range_noise_sigma = 0.01;
   std::mt19937 rng(21);
-  Mapped m;
-  m.map.updateByScan(world.scan(truth, laser, &rng), truth);
-  m.map.updateByScan(world.scan(truth, laser, &rng), truth);
-  m.scan = world.scan(truth, laser, &rng);
-  return m;
+  std::vector<PlacedScan> recent = {{truth, world.scan(truth, laser, &rng)}, {truth, world.scan(truth, laser, &rng)}};
+  return {LikelihoodField(recent), world.scan(truth, laser, &rng)};
+}
+
+double meanFieldValue(const LikelihoodField& field, const ScanPoints& scan, const Pose2D& pose) {
+  double sum = 0.0;
+  for (const Eigen::Vector2d& p : scan.points) {
+    const Eigen::Vector2d c = field.toCell(transformPoint(pose, p));
+    sum += field.value(static_cast<int>(std::floor(c.x() + 0.5)), static_cast<int>(std::floor(c.y() + 0.5)));
+  }
+  return sum / static_cast<double>(scan.points.size());
 }
 
 TEST(CorrelativeSearch, FindsAScanHalfAMetreAndTwentyDegreesOff) {
   const Pose2D truth{1.0, 0.2, 0.3};
-  const Mapped m = mappedAt(truth);
-  const OccupancyGridMap& coarse = m.map.level(m.map.levels() - 1);
-  const SearchResult found = correlativeSearch(coarse, m.scan, {1.4, -0.1, 0.3 + 20 * kDegree}, {0.6, 0.45});
-  EXPECT_LT(std::hypot(found.pose.x - truth.x, found.pose.y - truth.y), coarse.resolution());
-  EXPECT_LT(std::abs(angleDifference(found.pose.theta, truth.theta)), 2.0 * kDegree);
-  EXPECT_GT(found.score, 0.5);  // most points on walls the map knows
+  const Scene s = sceneAt(truth);
+  const SearchResult found = correlativeSearch(s.field, s.scan, {1.4, -0.1, 0.3 + 20 * kDegree}, {0.6, 0.45});
+  // The refinement reaches a tenth of a 5 cm cell; the scans' 1 cm noise leaves about that.
+  EXPECT_LT(std::hypot(found.pose.x - truth.x, found.pose.y - truth.y), 0.01);
+  EXPECT_LT(std::abs(angleDifference(found.pose.theta, truth.theta)), 0.2 * kDegree);
+  // Nearly every point on a wall the field knows, none in its free space: the blur's value a few mm off.
+  EXPECT_GT(found.score, 0.9);
   EXPECT_LE(found.score, 1.0);
+  // Branch and bound scores far fewer poses than the 25 x 25 shifts times the rotations of brute force.
+  const double rotations = 2.0 * std::ceil(0.45 / found.angle_step) + 1.0;
+  EXPECT_LT(found.candidates, 0.1 * 25 * 25 * rotations);
+}
+
+// Branch and bound is exact: on random windows its grid winner scores as the brute-force one.
+TEST(CorrelativeSearch, BranchAndBoundFindsTheBruteForceBest) {
+  const Pose2D truth{1.0, 0.2, 0.3};
+  const Scene s = sceneAt(truth);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> offset(-0.4, 0.4), turn(-0.3, 0.3);
+  for (int trial = 0; trial < 5; ++trial) {
+    const Pose2D centre{truth.x + offset(rng), truth.y + offset(rng), truth.theta + turn(rng)};
+    const SearchWindow window{0.3, 0.1};
+    const SearchResult found = correlativeSearch(s.field, s.scan, centre, window);
+    // Brute force over the same grid: translations one cell apart, rotations found.angle_step apart.
+    const int shifts = static_cast<int>(std::ceil(window.linear / LikelihoodField::kResolution));
+    const int angles = static_cast<int>(std::ceil(window.angular / found.angle_step));
+    double best = -std::numeric_limits<double>::infinity();
+    for (int a = -angles; a <= angles; ++a)
+      for (int dy = -shifts; dy <= shifts; ++dy)
+        for (int dx = -shifts; dx <= shifts; ++dx)
+          best = std::max(best, meanFieldValue(s.field, s.scan,
+                                               {centre.x + dx * LikelihoodField::kResolution,
+                                                centre.y + dy * LikelihoodField::kResolution,
+                                                centre.theta + a * found.angle_step}));
+    // The refinement can only add to the grid winner's score, by at most what a fraction of a cell brings.
+    EXPECT_GE(found.score, best - 0.02) << "trial " << trial;
+    EXPECT_LE(found.score, best + 0.15) << "trial " << trial;
+  }
 }
 
 TEST(CorrelativeSearch, StaysInsideItsWindow) {
   const Pose2D truth{1.0, 0.2, 0.3};
-  const Mapped m = mappedAt(truth);
-  const OccupancyGridMap& coarse = m.map.level(m.map.levels() - 1);
+  const Scene s = sceneAt(truth);
   const Pose2D centre{1.6, -0.4, 0.3};
-  const SearchResult found = correlativeSearch(coarse, m.scan, centre, {0.2, 0.1});
-  EXPECT_LE(std::abs(found.pose.x - centre.x), 0.2 + coarse.resolution());
-  EXPECT_LE(std::abs(found.pose.y - centre.y), 0.2 + coarse.resolution());
-  EXPECT_LE(std::abs(angleDifference(found.pose.theta, centre.theta)), 0.1 + 2 * kDegree);
-  // 5 x 5 shifts of the 0.1 m cells, times the rotations.
-  EXPECT_EQ(found.candidates % 25, 0);
+  const SearchResult found = correlativeSearch(s.field, s.scan, centre, {0.2, 0.1});
+  // The window plus the refinement's reach: two fifths of a cell twice, and its rotations.
+  EXPECT_LE(std::abs(found.pose.x - centre.x), 0.2 + 0.8 * LikelihoodField::kResolution + 1e-9);
+  EXPECT_LE(std::abs(found.pose.y - centre.y), 0.2 + 0.8 * LikelihoodField::kResolution + 1e-9);
+  EXPECT_LE(std::abs(angleDifference(found.pose.theta, centre.theta)), 0.1 + found.angle_step);
 }
 
-TEST(CorrelativeSearch, AnEmptyScanOrAZeroWindowReturnsTheCentre) {
-  const Mapped m = mappedAt({1.0, 0.2, 0.3});
+// Along a corridor every position fits alike; the prior picks the expected one.
+TEST(CorrelativeSearch, APriorDecidesAlongACorridor) {
+  testing::SyntheticWorld corridor;
+  corridor.addWall({-50.0, -1.03}, {50.0, -1.03});
+  corridor.addWall({-50.0, 0.97}, {50.0, 0.97});
+  testing::LaserConfig laser;
+  laser.max_range = 6.0;
+  const Pose2D truth{0.0, 0.0, 0.0};
+  const LikelihoodField field({{truth, corridor.scan(truth, laser)}});
+  const ScanPoints scan = corridor.scan(truth, laser);
+  for (const double expected_x : {-0.6, 0.35}) {
+    const SearchResult found =
+        correlativeSearch(field, scan, truth, {1.0, 0.2}, TranslationPrior{{expected_x, 0.0}, 0.1});
+    EXPECT_NEAR(found.pose.x, expected_x, LikelihoodField::kResolution);
+    EXPECT_NEAR(found.pose.y, truth.y, 0.01);
+    EXPECT_NEAR(found.pose.theta, truth.theta, 0.2 * kDegree);
+  }
+}
+
+TEST(CorrelativeSearch, AnEmptyScanReturnsTheCentre) {
+  const Scene s = sceneAt({1.0, 0.2, 0.3});
   const Pose2D centre{1.3, 0.1, 0.2};
-  const SearchResult none = correlativeSearch(m.map.finest(), ScanPoints{}, centre, {0.5, 0.5});
+  const SearchResult none = correlativeSearch(s.field, ScanPoints{}, centre, {0.5, 0.5});
   EXPECT_EQ(none.candidates, 0);
   EXPECT_EQ(none.pose.x, centre.x);
-  const SearchResult one = correlativeSearch(m.map.finest(), m.scan, centre, {0.0, 0.0});
-  EXPECT_EQ(one.candidates, 1);
-  EXPECT_EQ(one.pose.theta, centre.theta);
+  EXPECT_EQ(none.pose.theta, centre.theta);
 }
 
 }  // namespace

@@ -27,6 +27,7 @@ TEST(MapperOptions, DefaultsAreHectorMappingsParameterDefaults) {
   EXPECT_EQ(options.map_update_angle_thresh, 0.9);
   EXPECT_EQ(options.search_window_linear, 0.0);  // ours: off, as hector_mapping has no search
   EXPECT_EQ(options.search_window_angular, 0.0);
+  EXPECT_EQ(options.search_motion_weight, 0.1);
   EXPECT_EQ(validate(options), "");
 }
 
@@ -67,6 +68,7 @@ TEST(MapperOptions, RejectsEachBadFieldByName) {
       {"map_update_angle_thresh", [](MapperOptions* o) { o->map_update_angle_thresh = std::nan(""); }, "got nan"},
       {"search_window_linear", [](MapperOptions* o) { o->search_window_linear = -1.0; }, "got -1"},
       {"search_window_angular", [](MapperOptions* o) { o->search_window_angular = 4.0; }, "got 4"},
+      {"search_motion_weight", [](MapperOptions* o) { o->search_motion_weight = -0.5; }, "got -0.5"},
   };
   for (const BadOption& bad : cases) {
     MapperOptions options;
