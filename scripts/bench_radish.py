@@ -2,9 +2,10 @@
 """The mapper on real robot logs (issue 15): each Radish log in ../shared/datasets/radish (or --logs)
 goes through carmen_to_bag, then bench_mapping_bag (the node's steps without a master, no
 odometry), and per log this prints, in one run, for the mapper as hector_mapping matches ("plain": from
-the last pose) and with our correlative search ("search": 1.6 m and 1.4 rad round the last pose):
+the last pose), with our correlative search ("search": 1.6 m and 1.4 rad round the last pose), and
+with the search and loop closure ("loops"; the trajectory is then the final, optimised one):
 
-  <log> <plain|search>: N scans over D s; mapper mean X ms, max Y ms per scan (W s in all: S x the log's
+  <log> <plain|search|loops>: N scans over D s; mapper mean X ms, max Y ms per scan (W s in all: S x the log's
          duration); process W2 s (S2 x); absolute RMS A m after alignment (A0 m from the first scan),
          relative mean R m, Q deg over P pairs about 1 s apart
 
@@ -23,7 +24,7 @@ closure), >= 200x the log's duration on one core.
 
 _param:=value pairs go to bench_mapping_bag for both runs (e.g. _search_motion_weight:=0). --out
 keeps the bags, the pose tables (CSV) and the maps (PGM); --figures writes radish_<log>_map.png, the
-map made with the search beside the log's reference image.
+map made with the search and loop closure beside the log's reference image.
 """
 import argparse
 import csv
@@ -38,10 +39,13 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 DEFAULT_LOGS = os.path.join(os.path.dirname(ROOT), 'shared', 'datasets', 'radish')
 MAP_PARAMS = ['_map_resolution:=0.05', '_map_size:=2048']  # 102 m a side: either building from any start
-# Each log is mapped twice: as hector_mapping matches (from the last pose) and with our correlative search,
-# its window wide enough for the logs' scans (up to 1.5 m and 80 degrees apart).
-CONFIGS = [('plain', ['_search_window_linear:=0', '_search_window_angular:=0']),
-           ('search', ['_search_window_linear:=1.6', '_search_window_angular:=1.4'])]
+# Each log is mapped three times: as hector_mapping matches (from the last pose), with our correlative
+# search (its window wide enough for the logs' scans, up to 1.5 m and 80 degrees apart), and with the
+# search and loop closure.
+SEARCH = ['_search_window_linear:=1.6', '_search_window_angular:=1.4']
+CONFIGS = [('plain', ['_search_window_linear:=0', '_search_window_angular:=0', '_loop_closure:=false']),
+           ('search', SEARCH + ['_loop_closure:=false']),
+           ('loops', SEARCH + ['_loop_closure:=true'])]
 RELATIVE_GAP = 1.0  # s
 
 
@@ -114,7 +118,7 @@ def side_by_side(map_pgm, reference_png, title, path):
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(1, 2, figsize=(11, 5.5))
     axes[0].imshow(mpimg.imread(map_pgm), cmap='gray', vmin=0, vmax=255)
-    axes[0].set_title('%s: our hector_mapping with the search, no odometry' % title)
+    axes[0].set_title('%s: ours, search and loop closure, no odometry' % title)
     axes[1].imshow(mpimg.imread(reference_png), cmap='gray')
     axes[1].set_title('%s: reference (Radish, corrected)' % title)
     for ax in axes:

@@ -9,14 +9,16 @@
 // odometrySource world) is the ground truth: the mapper's poses are compared with it at their
 // stamps, in the map frame (the truth at the first scan), and the errors are printed too:
 //   accuracy: N poses, RMS X mm Y deg, max X mm Y deg, final X mm Y deg
-// --poses writes each scan's stamp, the mapper's pose and the truth at that stamp (nan without one),
+// --poses writes each scan's stamp, the mapper's pose and the truth at that stamp (nan without one); with
+//   _loop_closure:=true the poses are the final optimised trajectory (each scan's pose moved with the keyframe
+//   it was matched after),
 //   "t,x,y,theta,truth_x,truth_y,truth_theta", for other error measures (scripts/bench_radish.py);
 // --map writes the final map's known part as a PGM (occupied 0, free 254, unknown 205, as map_server).
 //
 // The _param:=value pairs are the node's map and filter parameters (map_resolution, map_size,
 // map_start_x, map_start_y, map_multi_res_levels, update_factor_free, update_factor_occupied,
 // map_update_distance_thresh, map_update_angle_thresh, search_window_linear, search_window_angular,
-// search_motion_weight,
+// search_motion_weight, loop_closure (true/false),
 // laser_min_dist, laser_max_dist,
 // laser_z_min_value, laser_z_max_value). Prints one line scripts/bench_mapping.py reads:
 //   bag: N scans of B beams: mean X ms, max Y ms per scan; final pose x y theta
@@ -59,6 +61,10 @@ bool setParameter(const std::string& name, const std::string& value, MapperOptio
       {"laser_max_dist", &f->laser_max_dist}, {"laser_z_min_value", &f->laser_z_min_value},
       {"laser_z_max_value", &f->laser_z_max_value}};
   std::map<std::string, int*> ints = {{"map_size", &m->map_size}, {"map_multi_res_levels", &m->map_multi_res_levels}};
+  if (name == "loop_closure") {
+    m->loop_closure = value == "true" || value == "1";
+    return value == "true" || value == "false" || value == "1" || value == "0";
+  }
   try {
     if (doubles.count(name)) *doubles[name] = std::stod(value);
     else if (ints.count(name)) *ints[name] = std::stoi(value);
@@ -216,6 +222,11 @@ int main(int argc, char** argv) {
   double last_stamp = 0.0;
   double total_ms = 0.0, max_ms = 0.0;
   std::vector<StampedPose> truth, slam_poses;
+  struct Anchor {
+    int keyframe;
+    hector_style_mapping::Pose2D offset;
+  };
+  std::vector<Anchor> anchors;  // with loop closure: per scan
   std::vector<std::string> topics = {scan_topic, "/tf", "/tf_static"};
   if (!truth_topic.empty()) topics.push_back(truth_topic);
   rosbag::View view(bag, rosbag::TopicQuery(topics));
@@ -252,6 +263,10 @@ int main(int argc, char** argv) {
     last_stamp = stamp;
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     slam_poses.push_back({scan->header.stamp.toSec(), slam.pose()});
+    // Each pose relative to the newest keyframe, to be carried along when loop closure moves it.
+    const hector_style_mapping::LoopClosure& loop = slam.loopClosure();
+    if (loop.keyframes() > 0)
+      anchors.push_back({loop.keyframes() - 1, between(loop.pose(loop.keyframes() - 1), slam.pose())});
     ++scans;
     beams = static_cast<long>(scan->ranges.size());
     total_ms += ms;
@@ -265,7 +280,15 @@ int main(int argc, char** argv) {
   std::printf("bag: %ld scans of %ld beams: mean %.3f ms, max %.3f ms per scan; final pose %.3f %.3f %.4f\n", scans,
               beams, total_ms / scans, max_ms, slam.pose().x, slam.pose().y, slam.pose().theta);
   std::printf("search: %d of %ld scans matched by the correlative search\n", slam.searchCount(), scans);
+  if (options.loop_closure)
+    std::printf("loop closure: %d of %d tries closed a loop over %d keyframes\n", slam.loopClosure().closures(),
+                slam.loopClosure().attempts(), slam.loopClosure().keyframes());
   std::sort(truth.begin(), truth.end(), [](const StampedPose& a, const StampedPose& b) { return a.t < b.t; });
+  // With loop closure the trajectory is the optimised one: each pose moves with its keyframe.
+  if (options.loop_closure && anchors.size() == slam_poses.size()) {
+    for (std::size_t i = 0; i < slam_poses.size(); ++i)
+      slam_poses[i].pose = compose(slam.loopClosure().pose(anchors[i].keyframe), anchors[i].offset);
+  }
   if (!truth_topic.empty()) printAccuracy(truth, slam_poses);
   if (!poses_path.empty()) writePoses(poses_path, truth, slam_poses);
   if (!map_path.empty()) writeMap(map_path, slam.map().finest());

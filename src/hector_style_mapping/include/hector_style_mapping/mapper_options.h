@@ -27,6 +27,10 @@ struct MapperOptions {
   // much mean field value (0..1: the share of points on a wall) per metre away from it. It only decides where
   // the scan cannot, along a featureless corridor. 0.1: a metre off must put a tenth more of the points on walls.
   double search_motion_weight = 0.1;   // per m
+  // Ours: loop closure (LoopClosure): the scans that update the map become keyframes of a pose graph, closed
+  // when a keyframe matches an older one's submap; the map is then redrawn from the optimised keyframes. Off
+  // by default, as upstream has none.
+  bool loop_closure = false;
 };
 
 // The largest map_size validate() accepts: beyond it the finest level alone would need gigabytes.

@@ -33,6 +33,7 @@ SlamProcessor::SlamProcessor(const MapperOptions& options) : options_(options), 
 
 void SlamProcessor::reset(const Pose2D& start) {
   map_.clear();
+  map_stale_ = false;
   pose_ = {start.x, start.y, normalizeAngle(start.theta)};
   previous_pose_ = pose_;
   last_map_update_pose_ = pose_;
@@ -44,6 +45,7 @@ void SlamProcessor::reset(const Pose2D& start) {
   window_.clear();
   field_stale_ = true;
   recent_intervals_.clear();
+  loop_closure_ = LoopClosure{};
 }
 
 ScanMatchResult matchThroughLevels(const ScanMatcher& matcher, const MultiResolutionMap& map, const ScanPoints& scan,
@@ -88,7 +90,8 @@ void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double s
         correlativeSearch(field_, scan, start, searchWindow(seconds_since_last_scan), prior);
     // Gauss-Newton on the finest level then settles it on the whole map, unless it wanders off further than
     // the search's own resolution: then the map disagrees with the recent scans (drift), and they know better.
-    last_match_ = matcher_.matchWithDetails(map_.finest(), scan, found.pose, kFinestLevelIterations);
+    // A map not yet redrawn after a loop closed is not asked.
+    last_match_ = matcher_.matchWithDetails(map_.finest(), scan, found.pose, map_stale_ ? 0 : kFinestLevelIterations);
     if (std::hypot(last_match_.pose.x - found.pose.x, last_match_.pose.y - found.pose.y) >
             LikelihoodField::kResolution ||
         std::abs(angleDifference(last_match_.pose.theta, found.pose.theta)) > found.angle_step) {
@@ -105,7 +108,7 @@ void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double s
 
   map_updated_by_last_scan_ = map_update_count_ == 0 || movedEnoughForMapUpdate();
   if (map_updated_by_last_scan_) {
-    map_.updateByScan(scan, pose_);
+    if (!map_stale_) map_.updateByScan(scan, pose_);  // else the redraw brings it
     last_map_update_pose_ = pose_;
     if (search) {
       window_.push_back({pose_, scan});
@@ -113,7 +116,22 @@ void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double s
       field_stale_ = true;
     }
     ++map_update_count_;
+    if (search && options_.loop_closure && loop_closure_.addKeyframe(scan, pose_)) adoptOptimisedKeyframes();
   }
+}
+
+void SlamProcessor::adoptOptimisedKeyframes() {
+  const int keyframes = loop_closure_.keyframes();
+  const Pose2D before = pose_;
+  pose_ = loop_closure_.pose(keyframes - 1);
+  // The pose before moves with this one, so that the motion prior keeps the robot's velocity.
+  previous_pose_ = compose(pose_, between(before, previous_pose_));
+  last_map_update_pose_ = pose_;
+  map_stale_ = true;  // redrawn when next asked for: loops close every few keyframes, maps are read less often
+  window_.clear();
+  for (int i = std::max(keyframes - static_cast<int>(kSearchedScans), 0); i < keyframes; ++i)
+    window_.push_back({loop_closure_.pose(i), loop_closure_.scan(i)});
+  field_stale_ = true;
 }
 
 SearchWindow SlamProcessor::searchWindow(double seconds_since_last_scan) {
@@ -129,6 +147,15 @@ SearchWindow SlamProcessor::searchWindow(double seconds_since_last_scan) {
   window.linear = std::min(window.linear, kPlausibleSpeed * interval);
   window.angular = std::min(window.angular, kPlausibleTurnRate * interval);
   return window;
+}
+
+const MultiResolutionMap& SlamProcessor::map() const {
+  if (map_stale_) {
+    map_.clear();
+    for (int i = 0; i < loop_closure_.keyframes(); ++i) map_.updateByScan(loop_closure_.scan(i), loop_closure_.pose(i));
+    map_stale_ = false;
+  }
+  return map_;
 }
 
 bool SlamProcessor::movedEnoughForMapUpdate() const {

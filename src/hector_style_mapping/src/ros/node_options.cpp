@@ -50,6 +50,7 @@ void readAll(ParameterReader& r, NodeOptions* o) {
   r.read("search_window_linear", &o->mapper.search_window_linear);
   r.read("search_window_angular", &o->mapper.search_window_angular);
   r.read("search_motion_weight", &o->mapper.search_motion_weight);
+  r.read("loop_closure", &o->mapper.loop_closure);
 }
 
 }  // namespace
