@@ -32,32 +32,27 @@ def jumps():
     return path
 
 
-class OdometryPredictionTest(unittest.TestCase):
-    def setUp(self):
-        rospy.init_node('test_mapping_node_odometry')
+class TwoMappers:
+    """Two mappers, each in its own namespace, fed the same synthetic scans of the room (a mixin for the
+    tests on scans far apart: this one and test_mapping_node_search)."""
+
+    def start(self, node_name, namespaces):
+        rospy.init_node(node_name)
         self.scans = rospy.Publisher('/scan', LaserScan, queue_size=10)
-        self.tf = tf2_ros.TransformBroadcaster()
         self.lock = threading.Lock()
-        self.poses = {'with_odometry': None, 'without_odometry': None}
-        for ns in self.poses:
+        self.poses = dict.fromkeys(namespaces)
+        for ns in namespaces:
             rospy.Subscriber('/%s/slam_out_pose' % ns, PoseStamped, self.keep, callback_args=ns)
         deadline = time.time() + 20
-        while self.scans.get_num_connections() < 2 and time.time() < deadline:
+        while self.scans.get_num_connections() < len(namespaces) and time.time() < deadline:
             time.sleep(0.05)
 
     def keep(self, msg, ns):
         with self.lock:
             self.poses[ns] = msg
 
-    def play(self, x, y, yaw):
-        """Odometry (exact) and a scan at one stamp, then time for both mappers to match it."""
-        stamp = rospy.Time.now()
-        t = TransformStamped()
-        t.header.stamp, t.header.frame_id, t.child_frame_id = stamp, 'odom', 'base_link'
-        t.transform.translation.x, t.transform.translation.y = x, y
-        t.transform.rotation.z, t.transform.rotation.w = math.sin(yaw / 2), math.cos(yaw / 2)
-        self.tf.sendTransform(t)
-        time.sleep(0.05)
+    def publish_scan(self, stamp, x, y, yaw):
+        """The scan a laser on a robot at (x, y, yaw) takes of the room, stamped `stamp`."""
         scan = LaserScan()
         scan.header.stamp, scan.header.frame_id = stamp, 'laser'
         scan.angle_min, scan.angle_increment = -math.pi, 2 * math.pi / BEAMS
@@ -65,6 +60,9 @@ class OdometryPredictionTest(unittest.TestCase):
         scan.range_min, scan.range_max = 0.05, 20.0
         scan.ranges = ranges_from(x, y, yaw, BEAMS)
         self.scans.publish(scan)
+
+    def wait_for_answers(self, stamp):
+        """Until every mapper has published its pose for the scan stamped `stamp`."""
         deadline = time.time() + 5
         while time.time() < deadline:
             with self.lock:
@@ -78,6 +76,24 @@ class OdometryPredictionTest(unittest.TestCase):
             p = self.poses[ns].pose
         return math.hypot(p.position.x - truth[0], p.position.y - truth[1]), \
             abs(math.remainder(yaw_of(p.orientation) - truth[2], 2 * math.pi))
+
+
+class OdometryPredictionTest(TwoMappers, unittest.TestCase):
+    def setUp(self):
+        self.start('test_mapping_node_odometry', ['with_odometry', 'without_odometry'])
+        self.tf = tf2_ros.TransformBroadcaster()
+
+    def play(self, x, y, yaw):
+        """Odometry (exact) and a scan at one stamp, then time for both mappers to match it."""
+        stamp = rospy.Time.now()
+        t = TransformStamped()
+        t.header.stamp, t.header.frame_id, t.child_frame_id = stamp, 'odom', 'base_link'
+        t.transform.translation.x, t.transform.translation.y = x, y
+        t.transform.rotation.z, t.transform.rotation.w = math.sin(yaw / 2), math.cos(yaw / 2)
+        self.tf.sendTransform(t)
+        time.sleep(0.05)
+        self.publish_scan(stamp, x, y, yaw)
+        self.wait_for_answers(stamp)
 
     def test_jumps_are_tracked_with_odometry_and_lost_without(self):
         for pose in START + jumps():

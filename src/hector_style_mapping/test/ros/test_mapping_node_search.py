@@ -4,76 +4,39 @@ apart): with the correlative search on (search_window_linear / _angular, ours, o
 upstream) the node keeps the pose, and its map has the room's walls; as upstream matches, from the last
 pose, the same run is lost.
 """
-import math
 import os
 import sys
-import threading
 import time
 import unittest
 
 import rospy
 import rostest
-from geometry_msgs.msg import PoseStamped
 from nav_msgs.msg import OccupancyGrid
-from sensor_msgs.msg import LaserScan
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from test_mapping_node import ranges_from, yaw_of  # noqa: E402  (the same synthetic room)
-from test_mapping_node_odometry import START, jumps  # noqa: E402  (the same jumps)
+from test_mapping_node_odometry import START, TwoMappers, jumps  # noqa: E402  (the same room and jumps)
 
-BEAMS = 360
 # Between scans: the search's window is the motion plausible over the scan interval (1.5 m/s, pi rad/s),
 # so jumps of 0.4 m and 0.5 rad need the scans this far apart in time.
 SCAN_INTERVAL = 0.5  # s
 
 
-class SearchTest(unittest.TestCase):
+class SearchTest(TwoMappers, unittest.TestCase):
     def setUp(self):
-        rospy.init_node('test_mapping_node_search')
-        self.scans = rospy.Publisher('/scan', LaserScan, queue_size=10)
-        self.lock = threading.Lock()
-        self.poses = {'with_search': None, 'without_search': None}
         self.map = None
-        for ns in self.poses:
-            rospy.Subscriber('/%s/slam_out_pose' % ns, PoseStamped, self.keep, callback_args=ns)
+        self.start('test_mapping_node_search', ['with_search', 'without_search'])
         rospy.Subscriber('/with_search/map', OccupancyGrid, self.keep_map)
-        deadline = time.time() + 20
-        while self.scans.get_num_connections() < 2 and time.time() < deadline:
-            time.sleep(0.05)  # one test: setUp runs once
-
-    def keep(self, msg, ns):
-        with self.lock:
-            self.poses[ns] = msg
 
     def keep_map(self, msg):
         with self.lock:
             self.map = msg
 
     def play(self, x, y, yaw):
-        """A scan taken at (x, y, yaw), then time for both mappers to match it."""
+        """A scan taken at (x, y, yaw), time for both mappers to match it, and the rest of SCAN_INTERVAL."""
         stamp = rospy.Time.now()
-        scan = LaserScan()
-        scan.header.stamp, scan.header.frame_id = stamp, 'laser'
-        scan.angle_min, scan.angle_increment = -math.pi, 2 * math.pi / BEAMS
-        scan.angle_max = scan.angle_min + scan.angle_increment * (BEAMS - 1)
-        scan.range_min, scan.range_max = 0.05, 20.0
-        scan.ranges = ranges_from(x, y, yaw, BEAMS)
-        self.scans.publish(scan)
-        deadline = time.time() + 5
-        while time.time() < deadline:
-            with self.lock:
-                if all(p is not None and p.header.stamp == stamp for p in self.poses.values()):
-                    break
-            time.sleep(0.01)
-        else:
-            self.fail('a mapper did not answer the scan at %.3f' % stamp.to_sec())
+        self.publish_scan(stamp, x, y, yaw)
+        self.wait_for_answers(stamp)
         time.sleep(max(0.0, SCAN_INTERVAL - (rospy.Time.now() - stamp).to_sec()))
-
-    def error(self, ns, truth):
-        with self.lock:
-            p = self.poses[ns].pose
-        return math.hypot(p.position.x - truth[0], p.position.y - truth[1]), \
-            abs(math.remainder(yaw_of(p.orientation) - truth[2], 2 * math.pi))
 
     def test_jumps_are_tracked_with_the_search_and_lost_without(self):
         for pose in START + jumps():
