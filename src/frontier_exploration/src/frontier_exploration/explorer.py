@@ -15,6 +15,11 @@
   `progress_timeout`), other frontiers are chosen, or the explorer waits. (A shorter wait, twice
   the mapper's interval between maps, was tried: one of ten Pioneer explorations then ended at
   61 %, and m_robot finished no sooner.)
+- A mapper may send no new map until the robot moves (slam_gmapping maps a scan only after
+  `linearUpdate` or `angularUpdate`): when nothing else is left to do and the map is overdue (no
+  map for twice its usual interval, or a single map so far), the robot turns a quarter turn on the spot at the reached
+  goal, once per arrival, towards the frontier's side; the wait for a newer map restarts when the
+  turn ends.
 - A frontier given up on once is tried again when nothing else is left (a robot that was stuck
   may not be any more); twice, never.
 - "complete" when no frontier is left, or none that is reachable and not given up on twice.
@@ -64,6 +69,7 @@ class Target:
     goal: tuple             # (x, y, yaw)
     best_distance: float    # the shortest path length to the goal seen so far (m)
     last_progress: float
+    turn: bool = False      # a turn on the spot at the last reached goal, for a newer map
 
 
 @dataclass
@@ -72,6 +78,9 @@ class Arrival:
     number: int
     middle: tuple
     at: float               # s; None: unknown, the next map judges
+    goal: tuple = None      # (x, y, yaw) reached
+    waited_from: float = None   # s: the newer map is waited for since then (None: since `at`)
+    turned: bool = False    # whether the robot has turned on the spot for it
 
 
 @dataclass
@@ -88,6 +97,7 @@ class Decision:
 class Explorer:
     PROGRESS_STEP = 0.05  # m nearer the goal along the path that counts as progress (more than the mapper's jitter)
     MAX_STRIKES = 2       # times a frontier may be given up on before it is left for good
+    MAP_INTERVALS = 5     # recent intervals between maps that give the mapper's usual interval
 
     def __init__(self, options=None):
         self.options = options or ExplorerOptions()
@@ -97,6 +107,7 @@ class Explorer:
         self.goals_sent = 0
         self.goals_reached = 0
         self.goals_failed = 0
+        self.map_times = []      # the last few distinct map times (s), oldest first
 
     # --- what the node calls ------------------------------------------------------------------------
 
@@ -104,6 +115,7 @@ class Explorer:
         """The decision for this map and robot position at time `now` (s); `map_time` is when the map
         was made (None: it is current)."""
         grid = grid.cropped_to_known()
+        self._note_map_time(map_time)
         o = self.options
         reach = reachable_cells(grid, robot_xy, o.clearance, o.frontiers.free_threshold, o.frontiers.occupied_threshold)
         if reach is None:
@@ -118,8 +130,9 @@ class Explorer:
         if self.target is not None:
             kept, dropped = self._follow_target(grid, reach, candidates, robot_xy, now)
             if kept:
-                return Decision(KEEP, 'heading for (%.2f, %.2f)' % self.target.goal[:2], self.target.goal,
-                                self.target.number, candidates, note, grid)
+                return Decision(KEEP, '%s (%.2f, %.2f)' % ('turning on the spot at' if self.target.turn else
+                                                           'heading for', *self.target.goal[:2]),
+                                self.target.goal, self.target.number, candidates, note, grid)
             note = '; '.join(n for n in (note, dropped) if n)
         goal_cells = reach.mask & seen_round(grid, o.clearance)
         for c in candidates:
@@ -138,6 +151,9 @@ class Explorer:
         fewest = min((c.strikes for c in reachable), default=0)
         usable = [c for c in reachable if c.strikes == fewest]  # frontiers given up on once: when nothing else is left
         if not usable and self.arrival is not None:
+            turn = self._turn_for_a_map(now)
+            if turn is not None:
+                return Decision(SEND, turn, self.target.goal, self.target.number, candidates, note, grid)
             return Decision(WAIT, 'waiting for a map made after goal %d was reached' % self.arrival.number,
                             candidates=candidates, note=note, grid=grid)
         if not usable:
@@ -159,11 +175,15 @@ class Explorer:
         if target is None or number != target.number:
             return None
         self.target = None
+        if target.turn:  # whatever its outcome: the wait for a newer map goes on from here
+            if self.arrival is not None and now is not None:
+                self.arrival.waited_from = now
+            return 'goal %d (the turn on the spot) %s' % (number, outcome)
         if outcome == PREEMPTED:
             return 'goal %d was preempted (not by us): choosing again' % number
         if outcome == SUCCEEDED:
             self.goals_reached += 1
-            self.arrival = Arrival(number, target.middle, now)
+            self.arrival = Arrival(number, target.middle, now, target.goal)
             return 'goal %d reached' % number
         self.blacklist.add(target.middle)
         self.goals_failed += 1
@@ -178,7 +198,8 @@ class Explorer:
         if a is None:
             return ''
         fresh = map_time is None or a.at is None or map_time > a.at
-        if not fresh and now - a.at <= self.options.progress_timeout:
+        waited_from = a.at if a.waited_from is None else a.waited_from
+        if not fresh and now - waited_from <= self.options.progress_timeout:
             return ''
         self.arrival = None
         if not any(self._near(c, a.middle, grid) for c in candidates):
@@ -186,6 +207,39 @@ class Explorer:
         self.blacklist.add(a.middle)
         return 'goal %d was reached but its frontier is still there%s: it is given up on' % (
             a.number, '' if fresh else ' (no newer map in %.0f s)' % self.options.progress_timeout)
+
+    def _note_map_time(self, map_time):
+        times = self.map_times
+        if map_time is None or (times and map_time == times[-1]):
+            return
+        if times and map_time < times[-1]:  # time went back (a world reset): a new schedule
+            times.clear()
+        times.append(map_time)
+        del times[:-(self.MAP_INTERVALS + 1)]
+
+    def _map_overdue(self, now):
+        """Whether no map has come for twice the mapper's usual interval (the median of the last few);
+        with a single map, always (waiting costs more than a needless turn)."""
+        if len(self.map_times) < 2:
+            return True
+        return now - self.map_times[-1] > 2.0 * float(np.median(np.diff(self.map_times)))
+
+    def _turn_for_a_map(self, now):
+        """The message of a quarter turn on the spot at the reached goal, made the target, when the
+        map is overdue and the robot has not turned for this arrival yet; else None."""
+        a = self.arrival
+        if a.turned or a.goal is None or not self._map_overdue(now):
+            return None
+        a.turned, a.waited_from = True, now
+        x, y, yaw = a.goal
+        left = math.cos(yaw) * (a.middle[1] - y) - math.sin(yaw) * (a.middle[0] - x) >= 0
+        turned = yaw + (math.pi / 2 if left else -math.pi / 2)
+        turned = math.atan2(math.sin(turned), math.cos(turned))
+        self.goals_sent += 1
+        self.target = Target(self.goals_sent, a.middle, (x, y, turned), 0.0, now, turn=True)
+        return ('goal %d: a turn on the spot at (%.2f, %.2f): no map has come for %.0f s since goal %d was reached '
+                '(the mapper may wait for the robot to move)' % (self.goals_sent, x, y, now - self.map_times[-1],
+                                                                 a.number))
 
     def _near(self, candidate, point, grid):
         """Whether a frontier cell of `candidate` lies within blacklist_radius of `point`."""
@@ -195,6 +249,15 @@ class Explorer:
     def _follow_target(self, grid, reach, candidates, robot_xy, now):
         """(keep it?, a note on why not)."""
         t = self.target
+        if t.turn:  # kept until it ends, unless a newer map has judged the arrival meanwhile
+            if self.arrival is None:
+                self.target = None
+                return False, ''
+            if now - t.last_progress > self.options.progress_timeout:
+                self.target = None
+                return False, 'the turn on the spot (goal %d) took over %.0f s: left' % (
+                    t.number, self.options.progress_timeout)
+            return True, ''
         cell = grid.world_to_cell(*t.goal[:2])
         if cell is None or not reach.mask[cell]:
             self.target = None

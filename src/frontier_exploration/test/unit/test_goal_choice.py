@@ -142,6 +142,13 @@ def east_and_north_openings():
     return Grid(g, RES)
 
 
+def only_the_east_opening():
+    """east_and_north_openings() with the north opening walled: the east frontier is the only one."""
+    g = east_and_north_openings().values.copy()
+    g[40, 25:35] = O
+    return Grid(g, RES)
+
+
 def test_the_largest_frontier_is_sent_once_then_kept_not_resent():
     explorer = Explorer(OPTIONS)
     grid = east_and_north_openings()
@@ -243,18 +250,21 @@ def test_a_frontier_still_there_on_a_map_made_after_the_arrival_is_given_up_once
     assert second.kind == SEND and grid.world_to_cell(*second.goal[:2])[0] >= 37
 
 
-def test_with_one_frontier_the_explorer_waits_for_a_newer_map_at_most_progress_timeout():
+def test_with_a_single_map_so_far_the_robot_turns_at_once_then_waits_progress_timeout():
     explorer = Explorer(OPTIONS)
-    g = east_and_north_openings().values.copy()
-    g[40, 25:35] = O                      # the north opening closed: the east frontier is the only one
-    grid = Grid(g, RES)
+    grid = only_the_east_opening()
     first = explorer.plan(grid, (0.5, 0.5), now=0.0, map_time=0.0)
     explorer.finished(first.number, SUCCEEDED, now=10.0)
-    waiting = explorer.plan(grid, first.goal[:2], now=39.5, map_time=9.0)
+    # No interval between maps to tell when the next is due: the turn comes at once.
+    turn = explorer.plan(grid, first.goal[:2], now=10.5, map_time=0.0)
+    assert turn.kind == SEND and turn.message.startswith('goal 2: a turn on the spot')
+    explorer.finished(turn.number, SUCCEEDED, now=12.0)
+    waiting = explorer.plan(grid, first.goal[:2], now=41.5, map_time=0.0)
     assert waiting.kind == WAIT and waiting.message == 'waiting for a map made after goal 1 was reached'
     assert len(explorer.blacklist) == 0
-    # No newer map within progress_timeout (30 s): judged on this one; tried once more, as the only frontier.
-    judged = explorer.plan(grid, first.goal[:2], now=40.5, map_time=9.0)
+    # No newer map within progress_timeout (30 s) of the turn: judged on this one; tried once more, as the
+    # only frontier.
+    judged = explorer.plan(grid, first.goal[:2], now=42.5, map_time=0.0)
     assert judged.note == ('goal 1 was reached but its frontier is still there (no newer map in 30 s): it is '
                            'given up on')
     assert judged.kind == SEND and explorer.blacklist.strikes(first.goal[:2]) == 1
@@ -334,3 +344,61 @@ def test_a_detour_round_a_wall_counts_as_progress():
     assert first.kind == SEND and grid.world_to_cell(*first.goal[:2])[1] > 20   # in room B
     for k, row in enumerate(range(12, 34, 2)):                                     # up room A, 5 s a step
         assert explorer.plan(grid, grid.cell_to_world(row, 10), now=5.0 * (k + 1)).kind == KEEP
+
+
+def reach_the_east_opening_with_maps_every_5_s(explorer, grid):
+    """Goal 1 sent at 0 s and kept while maps come at 0, 5 and 10 s; reached at 12 s."""
+    first = explorer.plan(grid, (0.5, 0.5), now=0.0, map_time=0.0)
+    for t in (5.0, 10.0):
+        assert explorer.plan(grid, (0.5 + 0.1 * t, 0.5), now=t, map_time=t).kind == KEEP
+    assert explorer.finished(first.number, SUCCEEDED, now=12.0) == 'goal 1 reached'
+    return first
+
+
+def test_when_the_map_is_overdue_after_an_arrival_the_robot_turns_on_the_spot_and_the_next_map_judges():
+    explorer = Explorer(OPTIONS)
+    grid = only_the_east_opening()
+    first = reach_the_east_opening_with_maps_every_5_s(explorer, grid)
+    # Maps came every 5 s: at 19 s the one due at 15 s is late, but not yet twice the interval.
+    assert explorer.plan(grid, first.goal[:2], now=19.0, map_time=10.0).kind == WAIT
+    turn = explorer.plan(grid, first.goal[:2], now=20.5, map_time=10.0)
+    assert turn.kind == SEND and turn.number == 2 and turn.goal[:2] == first.goal[:2]
+    assert turn.message.startswith('goal 2: a turn on the spot at (') and 'since goal 1 was reached' in turn.message
+    turned_by = math.atan2(math.sin(turn.goal[2] - first.goal[2]), math.cos(turn.goal[2] - first.goal[2]))
+    assert abs(abs(turned_by) - math.pi / 2) < 1e-9
+    assert explorer.plan(grid, first.goal[:2], now=21.0, map_time=10.0).kind == KEEP
+    assert explorer.finished(turn.number, SUCCEEDED, now=23.0) == 'goal 2 (the turn on the spot) succeeded'
+    # The turn made the mapper send a map: it shows the alcove, so nothing is given up and all is explored.
+    done = explorer.plan(east_alcove_seen(grid), first.goal[:2], now=24.0, map_time=23.5)
+    assert done.kind == COMPLETE and done.message == 'exploration complete: no frontier left'
+    assert len(explorer.blacklist) == 0 and explorer.goals_reached == 1
+
+
+def test_the_robot_turns_once_per_arrival_and_then_waits_progress_timeout_from_the_turns_end():
+    explorer = Explorer(OPTIONS)
+    grid = only_the_east_opening()
+    first = reach_the_east_opening_with_maps_every_5_s(explorer, grid)
+    turn = explorer.plan(grid, first.goal[:2], now=21.0, map_time=10.0)
+    assert turn.kind == SEND
+    # An aborted turn is no strike: the frontier was not judged.
+    assert explorer.finished(turn.number, ABORTED, now=25.0) == 'goal 2 (the turn on the spot) aborted'
+    assert len(explorer.blacklist) == 0
+    waiting = explorer.plan(grid, first.goal[:2], now=54.5, map_time=10.0)
+    assert waiting.kind == WAIT and waiting.message == 'waiting for a map made after goal 1 was reached'
+    judged = explorer.plan(grid, first.goal[:2], now=55.5, map_time=10.0)
+    assert judged.note == ('goal 1 was reached but its frontier is still there (no newer map in 30 s): it is '
+                           'given up on')
+    assert judged.kind == SEND and judged.number == 3 and explorer.blacklist.strikes(first.goal[:2]) == 1
+
+
+def test_a_newer_map_during_the_turn_judges_the_arrival_and_ends_the_turn():
+    explorer = Explorer(OPTIONS)
+    grid = only_the_east_opening()
+    first = reach_the_east_opening_with_maps_every_5_s(explorer, grid)
+    assert explorer.plan(grid, first.goal[:2], now=21.0, map_time=10.0).number == 2   # the turn
+    # A map made after the arrival still has the east frontier: given up on once, then tried again as the
+    # only one left, which replaces the turn.
+    after = explorer.plan(grid, first.goal[:2], now=22.0, map_time=21.5)
+    assert after.note == 'goal 1 was reached but its frontier is still there: it is given up on'
+    assert after.kind == SEND and after.number == 3 and after.goal[:2] == first.goal[:2]
+    assert explorer.finished(2, PREEMPTED, now=22.1) is None    # the turn's end is no longer ours
