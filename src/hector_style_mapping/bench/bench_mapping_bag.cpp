@@ -138,6 +138,31 @@ void printAccuracy(const std::vector<StampedPose>& truth, const std::vector<Stam
               deg * max_a, 1e3 * last_d, deg * last_a);
 }
 
+// Each accepted loop closure against the logged poses of its two keyframes' scans: how far its relative pose is
+// from the true one. A wrong closure bends the map; these say whether any was accepted.
+void printClosureErrors(const std::vector<StampedPose>& truth, const std::vector<double>& keyframe_stamps,
+                        const std::vector<hector_style_mapping::LoopClosure::Closure>& closures) {
+  std::vector<double> errors;
+  int wrong = 0;
+  for (const auto& c : closures) {
+    hector_style_mapping::Pose2D from, to;
+    if (!truthAt(truth, keyframe_stamps[static_cast<std::size_t>(c.from)], &from) ||
+        !truthAt(truth, keyframe_stamps[static_cast<std::size_t>(c.to)], &to))
+      continue;
+    const hector_style_mapping::Pose2D off = relative(relative(from, to), c.relative);
+    const double d = std::hypot(off.x, off.y), a = std::abs(off.theta);
+    errors.push_back(d);
+    if (d > 0.3 || a > 3.0 * M_PI / 180.0) ++wrong;
+    if (std::getenv("BENCH_TRACE"))
+      std::printf("closure %d -> %d score %.3f elsewhere %.3f: %.3f m %.2f deg off\n", c.from, c.to, c.score,
+                  c.elsewhere, d, a * 180.0 / M_PI);
+  }
+  if (errors.empty()) return;
+  std::sort(errors.begin(), errors.end());
+  std::printf("closures against the logged poses: %zu, median %.3f m, max %.3f m off; %d beyond 0.3 m or 3 deg\n",
+              errors.size(), errors[errors.size() / 2], errors.back(), wrong);
+}
+
 void writePoses(const std::string& path, const std::vector<StampedPose>& truth, const std::vector<StampedPose>& slam) {
   std::ofstream out(path);
   out << "t,x,y,theta,truth_x,truth_y,truth_theta\n";
@@ -227,6 +252,7 @@ int main(int argc, char** argv) {
     hector_style_mapping::Pose2D offset;
   };
   std::vector<Anchor> anchors;  // with loop closure: per scan
+  std::vector<double> keyframe_stamps;  // with loop closure: the stamp of each keyframe's scan
   std::vector<std::string> topics = {scan_topic, "/tf", "/tf_static"};
   if (!truth_topic.empty()) topics.push_back(truth_topic);
   rosbag::View view(bag, rosbag::TopicQuery(topics));
@@ -265,6 +291,7 @@ int main(int argc, char** argv) {
     slam_poses.push_back({scan->header.stamp.toSec(), slam.pose()});
     // Each pose relative to the newest keyframe, to be carried along when loop closure moves it.
     const hector_style_mapping::LoopClosure& loop = slam.loopClosure();
+    if (loop.keyframes() > static_cast<int>(keyframe_stamps.size())) keyframe_stamps.push_back(stamp);
     if (loop.keyframes() > 0)
       anchors.push_back({loop.keyframes() - 1, between(loop.pose(loop.keyframes() - 1), slam.pose())});
     ++scans;
@@ -281,8 +308,9 @@ int main(int argc, char** argv) {
               beams, total_ms / scans, max_ms, slam.pose().x, slam.pose().y, slam.pose().theta);
   std::printf("search: %d of %ld scans matched by the correlative search\n", slam.searchCount(), scans);
   if (options.loop_closure)
-    std::printf("loop closure: %d of %d tries closed a loop over %d keyframes\n", slam.loopClosure().closures(),
-                slam.loopClosure().attempts(), slam.loopClosure().keyframes());
+    std::printf("loop closure: %d of %d tries closed a loop over %d keyframes (%d good matches refused by the chain "
+                "check, %d as ambiguous)\n", slam.loopClosure().closures(), slam.loopClosure().attempts(),
+                slam.loopClosure().keyframes(), slam.loopClosure().inconsistent(), slam.loopClosure().ambiguous());
   std::sort(truth.begin(), truth.end(), [](const StampedPose& a, const StampedPose& b) { return a.t < b.t; });
   // With loop closure the trajectory is the optimised one: each pose moves with its keyframe.
   if (options.loop_closure && anchors.size() == slam_poses.size()) {
@@ -290,6 +318,8 @@ int main(int argc, char** argv) {
       slam_poses[i].pose = compose(slam.loopClosure().pose(anchors[i].keyframe), anchors[i].offset);
   }
   if (!truth_topic.empty()) printAccuracy(truth, slam_poses);
+  if (!truth_topic.empty() && options.loop_closure)
+    printClosureErrors(truth, keyframe_stamps, slam.loopClosure().acceptedClosures());
   if (!poses_path.empty()) writePoses(poses_path, truth, slam_poses);
   if (!map_path.empty()) writeMap(map_path, slam.map().finest());
   return 0;

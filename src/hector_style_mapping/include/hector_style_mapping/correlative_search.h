@@ -39,6 +39,14 @@ struct SearchResult {
 SearchResult correlativeSearch(const LikelihoodField& field, const ScanPoints& scan, const Pose2D& centre,
                                const SearchWindow& window, const TranslationPrior& prior = TranslationPrior{});
 
+// The best fit elsewhere: correlativeSearch (no prior) over the poses whose translation lies more than
+// `excluded_radius` (m, along x or along y) from `excluded`. Score -inf when the window holds none. A second fit
+// nearly as good as the first says the scan cannot tell the two places apart (a corridor, a row of look-alike
+// rooms).
+SearchResult correlativeSearchElsewhere(const LikelihoodField& field, const ScanPoints& scan, const Pose2D& centre,
+                                        const SearchWindow& window, const Eigen::Vector2d& excluded,
+                                        double excluded_radius);
+
 }  // namespace hector_style_mapping
 
 #endif  // HECTOR_STYLE_MAPPING_CORRELATIVE_SEARCH_H

@@ -41,6 +41,16 @@ class LoopClosure {
   // logs (docs/MAPPING.md: 2-3 cm median, half a degree).
   static constexpr double kTranslationSigma = 0.05;  // m
   static constexpr double kRotationSigma = 0.01;     // rad
+  // A match is kept only when it agrees with the keyframes' current estimates as well as the chain of front-end
+  // steps between the two allows: its squared Mahalanobis distance under the chain's covariance (those sigmas per
+  // step, propagated along it) below chi-square's 99.9 % point for 3 degrees of freedom. Look-alike corridors
+  // give confident matches metres along them; a short loop cannot have drifted that far.
+  static constexpr double kMaxChainDistance2 = 16.27;
+  // ... and only when the same search, leaving out the match's surroundings (kDistinct along x and y), finds
+  // nothing scoring above kMaxElsewhereRatio of the match: a second fit nearly as good says the scan cannot tell
+  // the two places apart.
+  static constexpr double kDistinct = 0.3;  // m
+  static constexpr double kMaxElsewhereRatio = 0.9;
 
   // Adds a keyframe: `scan` (base frame), matched by the front end at `matched` (map frame, consistent with the
   // poses this class returns). True when a loop closed: then every keyframe's pose() may have moved.
@@ -50,19 +60,36 @@ class LoopClosure {
   // Keyframe i's pose, optimised; its scan.
   const Pose2D& pose(int keyframe) const { return graph_.pose(keyframe); }
   const ScanPoints& scan(int keyframe) const { return scans_[static_cast<std::size_t>(keyframe)]; }
+  // An accepted closure: keyframe `to` seen from keyframe `from` at `relative`, with the search's score.
+  struct Closure {
+    int from;
+    int to;
+    Pose2D relative;
+    double score;
+    double elsewhere;  // the best score more than kDistinct from the match
+  };
   // Closures accepted, and tried, since construction.
-  int closures() const { return closures_; }
+  int closures() const { return static_cast<int>(closures_.size()); }
+  const std::vector<Closure>& acceptedClosures() const { return closures_; }
   int attempts() const { return attempts_; }
+  // Matches good enough to close a loop but refused: by the chain check (kMaxChainDistance2), as ambiguous
+  // (kMaxElsewhereRatio).
+  int inconsistent() const { return inconsistent_; }
+  int ambiguous() const { return ambiguous_; }
 
  private:
   // The keyframes to try `keyframe` against (see kCandidatesPerTry), nearest first.
   std::vector<int> candidatesFor(int keyframe) const;
+  // Whether `relative`, keyframe `to` seen from keyframe `from`, passes the chain check (kMaxChainDistance2).
+  bool agreesWithChain(int from, int to, const Pose2D& relative) const;
 
   PoseGraph graph_;
   std::vector<ScanPoints> scans_;
   LikelihoodField submap_;
-  int closures_ = 0;
+  std::vector<Closure> closures_;
   int attempts_ = 0;
+  int inconsistent_ = 0;
+  int ambiguous_ = 0;
 };
 
 }  // namespace hector_style_mapping

@@ -38,6 +38,9 @@ class BranchAndBound {
       : field_(field), rotated_(rotated), shifts_(shifts), centre_rotation_(centre_rotation), expected_(expected),
         weight_(weight) {}
 
+  // Translations within `radius` cells of `centre` (along x and along y) are not candidates.
+  void exclude(const Eigen::Vector2i& centre, int radius) { excluded_ = centre, excluded_radius_ = radius; }
+
   // The block's bound: the mean of its points' block maxima, less the prior's cost at the block's point
   // nearest the expected translation (for a single cell, the score less its cost).
   double score(int rotation, int x, int y, int level) {
@@ -59,6 +62,8 @@ class BranchAndBound {
     for (const Candidate& c : candidates) {
       if (c.score < best_.score) break;
       if (c.level == 0) {
+        if (std::abs(c.x - excluded_.x()) <= excluded_radius_ && std::abs(c.y - excluded_.y()) <= excluded_radius_)
+          continue;
         const double distance = std::hypot(c.x, c.y) + std::abs(c.rotation - centre_rotation_);
         if (c.score > best_.score || distance < best_distance_) best_ = c, best_distance_ = distance;
         continue;
@@ -84,6 +89,8 @@ class BranchAndBound {
   const int centre_rotation_;
   const Eigen::Vector2d expected_;
   const double weight_;
+  Eigen::Vector2i excluded_{0, 0};
+  int excluded_radius_ = -1;
   Candidate best_{0, 0, 0, 0, -std::numeric_limits<double>::infinity()};
   double best_distance_ = std::numeric_limits<double>::infinity();
   long evaluated_ = 0;
@@ -127,8 +134,13 @@ Pose2D refine(const LikelihoodField& field, const std::vector<Eigen::Vector2d>& 
 
 }  // namespace
 
-SearchResult correlativeSearch(const LikelihoodField& field, const ScanPoints& scan, const Pose2D& centre,
-                               const SearchWindow& window, const TranslationPrior& prior) {
+namespace {
+
+// correlativeSearch, leaving out translations within `excluded_radius` (m, along x and along y; < 0: none) of
+// `excluded`.
+SearchResult search(const LikelihoodField& field, const ScanPoints& scan, const Pose2D& centre,
+                    const SearchWindow& window, const TranslationPrior& prior, const Eigen::Vector2d& excluded,
+                    double excluded_radius) {
   SearchResult result;
   result.pose = centre;
   std::vector<Eigen::Vector2d> points;
@@ -159,14 +171,25 @@ SearchResult correlativeSearch(const LikelihoodField& field, const ScanPoints& s
   int level = 0;
   while (level + 1 < LikelihoodField::kLevels && (2 << level) <= shifts) ++level;
   const Eigen::Vector2d expected_cells = (prior.expected - Eigen::Vector2d(centre.x, centre.y)) / resolution;
-  BranchAndBound search(field, rotated, shifts, angles, expected_cells, std::max(prior.weight, 0.0) * resolution);
+  BranchAndBound bnb(field, rotated, shifts, angles, expected_cells, std::max(prior.weight, 0.0) * resolution);
+  if (excluded_radius >= 0.0) {
+    const Eigen::Vector2d cells = (excluded - Eigen::Vector2d(centre.x, centre.y)) / resolution;
+    bnb.exclude(Eigen::Vector2i(static_cast<int>(std::lround(cells.x())), static_cast<int>(std::lround(cells.y()))),
+                // Beyond the rounding of the excluded cell and the refinement's reach (a cell), so that the result
+                // still lies more than excluded_radius away.
+                static_cast<int>(std::ceil(excluded_radius / resolution + 1.5)));
+  }
   std::vector<Candidate> top;
   for (int r = 0; r <= 2 * angles; ++r)
     for (int y = -shifts; y <= shifts; y += 1 << level)
-      for (int x = -shifts; x <= shifts; x += 1 << level) top.push_back({r, x, y, level, search.score(r, x, y, level)});
-  search.descend(std::move(top));
-  const Candidate& best = search.best();
-  result.candidates = search.evaluated();
+      for (int x = -shifts; x <= shifts; x += 1 << level) top.push_back({r, x, y, level, bnb.score(r, x, y, level)});
+  bnb.descend(std::move(top));
+  const Candidate& best = bnb.best();
+  result.candidates = bnb.evaluated();
+  if (!std::isfinite(best.score)) {  // everything excluded
+    result.score = -std::numeric_limits<double>::infinity();
+    return result;
+  }
 
   // Finer than the grid, on the interpolated field: down to a tenth of a cell and an eighth of a rotation step.
   Pose2D refined{centre.x + best.x * resolution, centre.y + best.y * resolution,
@@ -179,6 +202,19 @@ SearchResult correlativeSearch(const LikelihoodField& field, const ScanPoints& s
   result.pose = {refined.x, refined.y, normalizeAngle(refined.theta)};
   result.score = refined_score;
   return result;
+}
+
+}  // namespace
+
+SearchResult correlativeSearch(const LikelihoodField& field, const ScanPoints& scan, const Pose2D& centre,
+                               const SearchWindow& window, const TranslationPrior& prior) {
+  return search(field, scan, centre, window, prior, Eigen::Vector2d::Zero(), -1.0);
+}
+
+SearchResult correlativeSearchElsewhere(const LikelihoodField& field, const ScanPoints& scan, const Pose2D& centre,
+                                        const SearchWindow& window, const Eigen::Vector2d& excluded,
+                                        double excluded_radius) {
+  return search(field, scan, centre, window, TranslationPrior{}, excluded, std::max(excluded_radius, 0.0));
 }
 
 }  // namespace hector_style_mapping

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include <Eigen/Cholesky>
+
 namespace hector_style_mapping {
 
 namespace {
@@ -33,8 +35,19 @@ bool LoopClosure::addKeyframe(const ScanPoints& scan, const Pose2D& matched) {
     submap_.build(submap);
     const SearchResult found = correlativeSearch(submap_, scan, matched, {kWindowLinear, kWindowAngular});
     if (found.score < kMinScore) continue;
-    graph_.addConstraint(candidate, keyframe, between(pose(candidate), found.pose), constraintInformation());
-    ++closures_;
+    const Pose2D relative = between(pose(candidate), found.pose);
+    if (!agreesWithChain(candidate, keyframe, relative)) {
+      ++inconsistent_;
+      continue;
+    }
+    const SearchResult elsewhere = correlativeSearchElsewhere(submap_, scan, matched, {kWindowLinear, kWindowAngular},
+                                                              Eigen::Vector2d(found.pose.x, found.pose.y), kDistinct);
+    if (elsewhere.score > kMaxElsewhereRatio * found.score) {
+      ++ambiguous_;
+      continue;
+    }
+    graph_.addConstraint(candidate, keyframe, relative, constraintInformation());
+    closures_.push_back({candidate, keyframe, relative, found.score, elsewhere.score});
     closed = true;
   }
   if (!closed) return false;
@@ -42,6 +55,31 @@ bool LoopClosure::addKeyframe(const ScanPoints& scan, const Pose2D& matched) {
   options.robust_kernel = RobustKernel::kCauchy;
   graph_.optimize(options);
   return true;
+}
+
+bool LoopClosure::agreesWithChain(int from, int to, const Pose2D& relative) const {
+  // The covariance of `to` seen from `from` along the chain of steps between them, each step's noise
+  // kTranslationSigma / kRotationSigma in its own frame (first-order propagation through compose()).
+  const double t = kTranslationSigma * kTranslationSigma, r = kRotationSigma * kRotationSigma;
+  const Eigen::Matrix3d step_noise = Eigen::Vector3d(t, t, r).asDiagonal();
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  Pose2D chained;
+  for (int i = from; i < to; ++i) {
+    const Pose2D step = between(pose(i), pose(i + 1));
+    const double c = std::cos(chained.theta), s = std::sin(chained.theta);
+    Eigen::Matrix3d along_chain = Eigen::Matrix3d::Identity();  // d compose / d chained
+    along_chain(0, 2) = -s * step.x - c * step.y;
+    along_chain(1, 2) = c * step.x - s * step.y;
+    Eigen::Matrix3d along_step = Eigen::Matrix3d::Identity();  // d compose / d step
+    along_step.topLeftCorner<2, 2>() << c, -s, s, c;
+    covariance = along_chain * covariance * along_chain.transpose() + along_step * step_noise * along_step.transpose();
+    chained = compose(chained, step);
+  }
+  // The match is itself a constraint with that noise.
+  covariance += step_noise;
+  const Eigen::Vector3d error(relative.x - chained.x, relative.y - chained.y,
+                              angleDifference(relative.theta, chained.theta));
+  return error.dot(covariance.ldlt().solve(error)) <= kMaxChainDistance2;
 }
 
 std::vector<int> LoopClosure::candidatesFor(int keyframe) const {

@@ -111,6 +111,41 @@ TEST(CorrelativeSearch, APriorDecidesAlongACorridor) {
   }
 }
 
+// The best fit elsewhere tells a place from a look-alike: in the maze nothing 0.3 m off fits nearly as well; along
+// a corridor a fit 0.3 m further on is as good as the true one.
+TEST(CorrelativeSearch, TheBestFitElsewhereIsFarWorseInAMazeThanAlongACorridor) {
+  const Pose2D truth{1.0, 0.2, 0.3};
+  const Scene maze = sceneAt(truth);
+  const SearchResult here = correlativeSearch(maze.field, maze.scan, truth, {1.0, 0.2});
+  const SearchResult there =
+      correlativeSearchElsewhere(maze.field, maze.scan, truth, {1.0, 0.2}, {here.pose.x, here.pose.y}, 0.3);
+  EXPECT_GT(std::max(std::abs(there.pose.x - here.pose.x), std::abs(there.pose.y - here.pose.y)), 0.3);
+  EXPECT_LT(there.score, 0.6 * here.score);
+  EXPECT_GT(there.score, -1.0);
+
+  testing::SyntheticWorld corridor;
+  corridor.addWall({-50.0, -1.03}, {50.0, -1.03});
+  corridor.addWall({-50.0, 0.97}, {50.0, 0.97});
+  testing::LaserConfig laser;
+  laser.max_range = 6.0;
+  const Pose2D start{0.0, 0.0, 0.0};
+  const LikelihoodField field({{start, corridor.scan(start, laser)}});
+  const ScanPoints scan = corridor.scan(start, laser);
+  const SearchResult best = correlativeSearch(field, scan, start, {1.0, 0.2});
+  const SearchResult elsewhere = correlativeSearchElsewhere(field, scan, start, {1.0, 0.2}, {best.pose.x, best.pose.y}, 0.3);
+  EXPECT_GT(std::abs(elsewhere.pose.x - best.pose.x), 0.3);
+  EXPECT_NEAR(elsewhere.pose.y, best.pose.y, 0.02);
+  EXPECT_GT(elsewhere.score, 0.9 * best.score);
+  EXPECT_LE(elsewhere.score, best.score + 1e-9);
+}
+
+TEST(CorrelativeSearch, NothingElsewhereInAWindowSmallerThanTheExclusion) {
+  const Pose2D truth{1.0, 0.2, 0.3};
+  const Scene s = sceneAt(truth);
+  const SearchResult none = correlativeSearchElsewhere(s.field, s.scan, truth, {0.2, 0.1}, {truth.x, truth.y}, 0.3);
+  EXPECT_EQ(none.score, -std::numeric_limits<double>::infinity());
+}
+
 TEST(CorrelativeSearch, AnEmptyScanReturnsTheCentre) {
   const Scene s = sceneAt({1.0, 0.2, 0.3});
   const Pose2D centre{1.3, 0.1, 0.2};

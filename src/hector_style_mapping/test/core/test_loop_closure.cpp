@@ -107,5 +107,47 @@ TEST(LoopClosure, NothingIsTriedAgainstRecentKeyframes) {
   for (std::size_t k = 0; k < 30; ++k) EXPECT_NEAR(distance(loop.pose(static_cast<int>(k)), truth[k]), 0.0, 1e-9);
 }
 
+// Out 4 m along the ring's bottom corridor, a half turn on the spot, and back: keyframe 25 is at the start again,
+// after a chain of 25 steps.
+std::vector<Pose2D> outAndBack() {
+  std::vector<Pose2D> poses;
+  for (int k = 0; k <= 10; ++k) poses.push_back({0.4 * k, 0.0, 0.0});
+  for (int k = 1; k <= 5; ++k) poses.push_back({4.0, 0.0, normalizeAngle(k * M_PI / 5.0)});
+  for (int k = 1; k <= 10; ++k) poses.push_back({4.0 - 0.4 * k, 0.0, M_PI});
+  return poses;
+}
+
+// Keyframe 25's scan, taken `shift` m further along the corridor than the front end (right all along) says.
+LoopClosure outAndBackSeenFrom(double shift) {
+  const testing::SyntheticWorld world = ring();
+  testing::LaserConfig laser;
+  laser.beams = 360;
+  LoopClosure loop;
+  const std::vector<Pose2D> truth = outAndBack();
+  for (std::size_t k = 0; k < truth.size(); ++k) {
+    Pose2D seen_from = truth[k];
+    if (k + 1 == truth.size()) seen_from.x += shift;
+    loop.addKeyframe(world.scan(seen_from, laser), truth[k]);
+  }
+  return loop;
+}
+
+// A match that puts a keyframe further from its estimate than the chain of steps since the candidate can have
+// drifted (a look-alike place) is refused; one that agrees is taken.
+TEST(LoopClosure, AMatchTheChainCannotExplainIsRefused) {
+  // Keyframes 20 (2 m from the start) and 25 are both tried against keyframe 0.
+  const LoopClosure agrees = outAndBackSeenFrom(0.0);
+  EXPECT_EQ(agrees.closures(), 2);
+  EXPECT_EQ(agrees.inconsistent(), 0);
+  EXPECT_NEAR(agrees.pose(25).x, 0.0, 0.02);
+
+  const LoopClosure far = outAndBackSeenFrom(1.6);
+  EXPECT_EQ(far.closures(), 1);
+  EXPECT_EQ(far.inconsistent(), 1);
+  ASSERT_EQ(far.acceptedClosures().size(), 1u);
+  EXPECT_EQ(far.acceptedClosures()[0].to, 20);
+  EXPECT_NEAR(far.pose(25).x, 0.0, 0.02);  // not pulled 1.6 m along
+}
+
 }  // namespace
 }  // namespace hector_style_mapping
