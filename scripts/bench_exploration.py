@@ -137,6 +137,8 @@ def bench(name, explorer, starts, seed, rtf, mapper):
                   k + 1, *start, 'complete' if r['complete'] else 'NOT COMPLETE', 100 * r['explored'],
                   '%5.1f' % r['sim_to_95'] if r['sim_to_95'] is not None else '  -  ', r['sim'], r['wall'],
                   r['distance'], tour, r['contacts'], 100 * r['map_precision']), flush=True)
+        if r['explored'] < 0.99:  # what the node said when it stopped short
+            print('    status: %s' % r['status'], flush=True)
     done = [r for r in runs if r]
     good = sum(1 for r in done if r['complete'] and r['explored'] >= 0.99)
     sim_total, wall_total = sum(r['sim'] for r in done), sum(r['wall'] for r in done)

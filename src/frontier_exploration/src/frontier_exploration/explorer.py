@@ -17,9 +17,9 @@
   61 %, and m_robot finished no sooner.)
 - A mapper may send no new map until the robot moves (slam_gmapping maps a scan only after
   `linearUpdate` or `angularUpdate`): when nothing else is left to do and the map is overdue (no
-  map for twice its usual interval, or a single map so far), the robot turns a quarter turn on the spot at the reached
-  goal, once per arrival, towards the frontier's side; the wait for a newer map restarts when the
-  turn ends.
+  map for twice its usual interval, or a single map so far), the robot turns a quarter turn on
+  the spot at the reached goal, once per arrival, towards the frontier's side; the wait for a
+  newer map restarts when the turn ends.
 - A frontier given up on once is tried again when nothing else is left (a robot that was stuck
   may not be any more); twice, never.
 - "complete" when no frontier is left, or none that is reachable and not given up on twice.
@@ -237,9 +237,9 @@ class Explorer:
         turned = math.atan2(math.sin(turned), math.cos(turned))
         self.goals_sent += 1
         self.target = Target(self.goals_sent, a.middle, (x, y, turned), 0.0, now, turn=True)
-        return ('goal %d: a turn on the spot at (%.2f, %.2f): no map has come for %.0f s since goal %d was reached '
-                '(the mapper may wait for the robot to move)' % (self.goals_sent, x, y, now - self.map_times[-1],
-                                                                 a.number))
+        silent = ' for %.0f s' % (now - self.map_times[-1]) if self.map_times else ''
+        return ('goal %d: a turn on the spot at (%.2f, %.2f): no map has come%s since goal %d was reached (the mapper '
+                'may wait for the robot to move)' % (self.goals_sent, x, y, silent, a.number))
 
     def _near(self, candidate, point, grid):
         """Whether a frontier cell of `candidate` lies within blacklist_radius of `point`."""
