@@ -92,16 +92,24 @@ TEST(CorrelativeSearch, StaysInsideItsWindow) {
   EXPECT_LE(std::abs(angleDifference(found.pose.theta, centre.theta)), 0.1 + found.angle_step);
 }
 
-// Along a corridor every position fits alike; the prior picks the expected one.
-TEST(CorrelativeSearch, APriorDecidesAlongACorridor) {
+// A featureless corridor 2 m wide along x, 100 m long, seen with a 6 m laser from the origin: the field of one
+// scan, and a second scan taken there.
+Scene corridorAtTheOrigin() {
   testing::SyntheticWorld corridor;
   corridor.addWall({-50.0, -1.03}, {50.0, -1.03});
   corridor.addWall({-50.0, 0.97}, {50.0, 0.97});
   testing::LaserConfig laser;
   laser.max_range = 6.0;
+  const Pose2D origin{0.0, 0.0, 0.0};
+  return {LikelihoodField({{origin, corridor.scan(origin, laser)}}), corridor.scan(origin, laser)};
+}
+
+// Along a corridor every position fits alike; the prior picks the expected one.
+TEST(CorrelativeSearch, APriorDecidesAlongACorridor) {
   const Pose2D truth{0.0, 0.0, 0.0};
-  const LikelihoodField field({{truth, corridor.scan(truth, laser)}});
-  const ScanPoints scan = corridor.scan(truth, laser);
+  const Scene s = corridorAtTheOrigin();
+  const LikelihoodField& field = s.field;
+  const ScanPoints& scan = s.scan;
   for (const double expected_x : {-0.6, 0.35}) {
     const SearchResult found =
         correlativeSearch(field, scan, truth, {1.0, 0.2}, TranslationPrior{{expected_x, 0.0}, 0.1});
@@ -123,16 +131,11 @@ TEST(CorrelativeSearch, TheBestFitElsewhereIsFarWorseInAMazeThanAlongACorridor) 
   EXPECT_LT(there.score, 0.6 * here.score);
   EXPECT_GT(there.score, -1.0);
 
-  testing::SyntheticWorld corridor;
-  corridor.addWall({-50.0, -1.03}, {50.0, -1.03});
-  corridor.addWall({-50.0, 0.97}, {50.0, 0.97});
-  testing::LaserConfig laser;
-  laser.max_range = 6.0;
   const Pose2D start{0.0, 0.0, 0.0};
-  const LikelihoodField field({{start, corridor.scan(start, laser)}});
-  const ScanPoints scan = corridor.scan(start, laser);
-  const SearchResult best = correlativeSearch(field, scan, start, {1.0, 0.2});
-  const SearchResult elsewhere = correlativeSearchElsewhere(field, scan, start, {1.0, 0.2}, {best.pose.x, best.pose.y}, 0.3);
+  const Scene corridor = corridorAtTheOrigin();
+  const SearchResult best = correlativeSearch(corridor.field, corridor.scan, start, {1.0, 0.2});
+  const SearchResult elsewhere = correlativeSearchElsewhere(corridor.field, corridor.scan, start, {1.0, 0.2},
+                                                            {best.pose.x, best.pose.y}, 0.3);
   EXPECT_GT(std::abs(elsewhere.pose.x - best.pose.x), 0.3);
   EXPECT_NEAR(elsewhere.pose.y, best.pose.y, 0.02);
   EXPECT_GT(elsewhere.score, 0.9 * best.score);
