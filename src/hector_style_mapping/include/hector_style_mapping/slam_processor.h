@@ -1,6 +1,7 @@
 #ifndef HECTOR_STYLE_MAPPING_SLAM_PROCESSOR_H
 #define HECTOR_STYLE_MAPPING_SLAM_PROCESSOR_H
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -42,7 +43,8 @@ class SlamProcessor {
   static constexpr double kPlausibleTurnRate = M_PI;  // rad/s
   // The scan interval is the median of this many recent ones, so that a log's odd stamps do not shrink it.
   static constexpr std::size_t kRecentIntervals = 15;
-  // Scans the correlative search matches against: the last ones that updated the map.
+  // Scans the correlative search matches against: the last ones that updated the map, and the last scan if
+  // it did not (turning on the spot, it overlaps the next scan most).
   static constexpr std::size_t kSearchedScans = 3;
 
   // Matches the scan from the coarsest level to the finest and updates every level of the map if this is the
@@ -52,7 +54,7 @@ class SlamProcessor {
   // The match starts at `guess` (odometry, say) if given, otherwise at the last pose, as hector_mapping. With
   // the search on (the options' search_window_linear and _angular > 0), a correlative search (correlativeSearch)
   // looks for the scan within a window round the start, against the field of the last kSearchedScans scans
-  // that updated the map, and Gauss-Newton on the finest level refines its pose (unless it strays further
+  // that updated the map and the last scan, and Gauss-Newton on the finest level refines its pose (unless it strays further
   // than the search's resolution: then the map has drifted from the recent scans, and the search's pose stands).
   // Without it, Gauss-Newton goes from the start through the levels, coarsest first.
   //
@@ -125,8 +127,10 @@ class SlamProcessor {
   int search_count_ = 0;
   Pose2D previous_pose_;  // pose() before the last scan: with it, the search's prior
   std::vector<double> recent_intervals_;  // s, the last kRecentIntervals known ones
-  // The last kSearchedScans scans that updated the map, and the search's field built from them (on demand).
+  // The last kSearchedScans scans that updated the map, the last scan if it did not, and the search's field
+  // built from them (on demand).
   std::vector<PlacedScan> window_;
+  std::optional<PlacedScan> unmapped_scan_;
   LikelihoodField field_;
   bool field_stale_ = true;
   LoopClosure loop_closure_;

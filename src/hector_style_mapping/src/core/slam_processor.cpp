@@ -43,6 +43,7 @@ void SlamProcessor::reset(const Pose2D& start) {
   map_update_count_ = 0;
   search_count_ = 0;
   window_.clear();
+  unmapped_scan_.reset();
   field_stale_ = true;
   recent_intervals_.clear();
   loop_closure_ = LoopClosure{};
@@ -77,7 +78,9 @@ void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double s
   if (search && !window_.empty()) {
     // The search decides where the scan fits the recent scans best.
     if (field_stale_) {
-      field_.build(window_);
+      std::vector<PlacedScan> scans = window_;
+      if (unmapped_scan_) scans.push_back(*unmapped_scan_);
+      field_.build(scans);
       field_stale_ = false;
     }
     // The guess, or else constant velocity per scan, for the translation: along a featureless corridor it
@@ -107,6 +110,15 @@ void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double s
   covariance_ = matchCovariance(last_match_, matcher_.surfaceNormalHessian(map_.finest(), scan, pose_));
 
   map_updated_by_last_scan_ = map_update_count_ == 0 || movedEnoughForMapUpdate();
+  if (search) {
+    // Turning on the spot, map updates lie a turn apart: the scan just matched overlaps the next one most.
+    if (map_updated_by_last_scan_) {
+      unmapped_scan_.reset();
+    } else {
+      unmapped_scan_ = PlacedScan{pose_, scan};
+    }
+    field_stale_ = true;
+  }
   if (map_updated_by_last_scan_) {
     if (!map_stale_) map_.updateByScan(scan, pose_);  // else the redraw brings it
     last_map_update_pose_ = pose_;
@@ -129,6 +141,7 @@ void SlamProcessor::adoptOptimisedKeyframes() {
   last_map_update_pose_ = pose_;
   map_stale_ = true;  // redrawn when next asked for: loops close every few keyframes, maps are read less often
   window_.clear();
+  unmapped_scan_.reset();
   for (int i = std::max(keyframes - static_cast<int>(kSearchedScans), 0); i < keyframes; ++i)
     window_.push_back({loop_closure_.pose(i), loop_closure_.scan(i)});
   field_stale_ = true;
