@@ -41,6 +41,7 @@
 #include <tf2/exceptions.h>
 #include <tf2_msgs/TFMessage.h>
 
+#include "hector_style_mapping/anchored_trajectory.h"
 #include "hector_style_mapping/ros/scan_conversion.h"
 #include "hector_style_mapping/slam_processor.h"
 
@@ -247,11 +248,7 @@ int main(int argc, char** argv) {
   double last_stamp = 0.0;
   double total_ms = 0.0, max_ms = 0.0;
   std::vector<StampedPose> truth, slam_poses;
-  struct Anchor {
-    int keyframe;
-    hector_style_mapping::Pose2D offset;
-  };
-  std::vector<Anchor> anchors;  // with loop closure: per scan
+  hector_style_mapping::AnchoredTrajectory anchored;  // the poses, moving with their keyframes
   std::vector<double> keyframe_stamps;  // with loop closure: the stamp of each keyframe's scan
   std::vector<std::string> topics = {scan_topic, "/tf", "/tf_static"};
   if (!truth_topic.empty()) topics.push_back(truth_topic);
@@ -289,11 +286,9 @@ int main(int argc, char** argv) {
     last_stamp = stamp;
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     slam_poses.push_back({scan->header.stamp.toSec(), slam.pose()});
-    // Each pose relative to the newest keyframe, to be carried along when loop closure moves it.
     const hector_style_mapping::LoopClosure& loop = slam.loopClosure();
     if (loop.keyframes() > static_cast<int>(keyframe_stamps.size())) keyframe_stamps.push_back(stamp);
-    if (loop.keyframes() > 0)
-      anchors.push_back({loop.keyframes() - 1, between(loop.pose(loop.keyframes() - 1), slam.pose())});
+    anchored.append(slam.pose(), loop);
     ++scans;
     beams = static_cast<long>(scan->ranges.size());
     total_ms += ms;
@@ -313,10 +308,7 @@ int main(int argc, char** argv) {
                 slam.loopClosure().keyframes(), slam.loopClosure().inconsistent(), slam.loopClosure().ambiguous());
   std::sort(truth.begin(), truth.end(), [](const StampedPose& a, const StampedPose& b) { return a.t < b.t; });
   // With loop closure the trajectory is the optimised one: each pose moves with its keyframe.
-  if (options.loop_closure && anchors.size() == slam_poses.size()) {
-    for (std::size_t i = 0; i < slam_poses.size(); ++i)
-      slam_poses[i].pose = compose(slam.loopClosure().pose(anchors[i].keyframe), anchors[i].offset);
-  }
+  for (std::size_t i = 0; i < slam_poses.size(); ++i) slam_poses[i].pose = anchored.pose(i, slam.loopClosure());
   if (!truth_topic.empty()) printAccuracy(truth, slam_poses);
   if (!truth_topic.empty() && options.loop_closure)
     printClosureErrors(truth, keyframe_stamps, slam.loopClosure().acceptedClosures());

@@ -302,7 +302,16 @@ void MappingNode::republishMapTransform() {
   tf_broadcaster_.sendTransform(map_transform_);
 }
 
+void MappingNode::followLoopClosure() {
+  const LoopClosure& loops = slam_.loopClosure();
+  if (loops.closures() == trajectory_closures_) return;
+  trajectory_closures_ = loops.closures();
+  for (std::size_t i = 0; i < trajectory_.poses.size() && i < anchored_trajectory_.size(); ++i)
+    trajectory_.poses[i].pose = poseMessage(anchored_trajectory_.pose(i, loops));
+}
+
 void MappingNode::appendTrajectory(const ros::Time& stamp) {
+  followLoopClosure();
   const Pose2D& pose = slam_.pose();
   if (!trajectory_.poses.empty()) {
     const geometry_msgs::Pose& last = trajectory_.poses.back().pose;
@@ -316,6 +325,7 @@ void MappingNode::appendTrajectory(const ros::Time& stamp) {
   p.header.frame_id = options_.map_frame;
   p.pose = poseMessage(pose);
   trajectory_.poses.push_back(p);
+  anchored_trajectory_.append(pose, slam_.loopClosure());
 }
 
 void MappingNode::publishMap() {
@@ -348,6 +358,8 @@ void MappingNode::reset(const std::string& why) {
   slam_.reset();
   last_scan_odometry_.reset();
   trajectory_.poses.clear();
+  anchored_trajectory_.clear();
+  trajectory_closures_ = 0;
   have_initial_pose_ = false;
   published_map_updates_ = -1;  // the empty map goes out now
   publishMap();

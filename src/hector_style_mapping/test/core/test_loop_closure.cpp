@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "hector_style_mapping/anchored_trajectory.h"
 #include "hector_style_mapping/loop_closure.h"
 #include "synthetic_world.h"
 
@@ -91,6 +92,56 @@ TEST(LoopClosure, SpreadsTheDriftOfARingBackOverIt) {
   const int last = loop.keyframes() - 1;
   EXPECT_LT(error(last), 0.5 * drift(last));
   EXPECT_LT(std::abs(angleDifference(loop.pose(kRound).theta, truth[kRound].theta)), 1.0 * kDegree);
+}
+
+// The path between keyframes moves with them: round the ring, a pose halfway to the next keyframe (as the front
+// end saw it, after the newest keyframe) ends as close to the truth as the keyframes do, where as appended it is
+// off by the drift.
+TEST(LoopClosure, AnchoredTrajectoryFollowsTheClosedLoop) {
+  const testing::SyntheticWorld world = ring();
+  const std::vector<Pose2D> truth = tour();
+  testing::LaserConfig laser;
+  laser.beams = 360;
+  laser.range_noise_sigma = 0.01;
+  std::mt19937 rng(7);
+
+  LoopClosure loop;
+  AnchoredTrajectory path;
+  std::vector<Pose2D> halfway_truth, as_appended;
+  for (std::size_t k = 0; k + 1 < truth.size(); ++k) {
+    const Pose2D matched =
+        k == 0 ? truth[0] : compose(loop.pose(static_cast<int>(k) - 1), drifted(between(truth[k - 1], truth[k])));
+    loop.addKeyframe(world.scan(truth[k], laser, &rng), matched);
+    const Pose2D half_step = between(truth[k], truth[k + 1]);
+    const Pose2D seen = compose(loop.pose(static_cast<int>(k)), drifted({0.5 * half_step.x, 0.5 * half_step.y, 0.0}));
+    path.append(seen, loop);
+    as_appended.push_back(seen);
+    halfway_truth.push_back(compose(truth[k], {0.5 * half_step.x, 0.5 * half_step.y, 0.0}));
+  }
+  ASSERT_GE(loop.closures(), 3);
+  ASSERT_EQ(path.size(), as_appended.size());
+  double worst_as_appended = 0.0;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    worst_as_appended = std::max(worst_as_appended, distance(as_appended[i], halfway_truth[i]));
+    // Its keyframe's error, and 2 cm for the half step's own 3 % and the keyframe's heading error over it.
+    const double keyframe_error = distance(loop.pose(static_cast<int>(i)), truth[i]);
+    EXPECT_LT(distance(path.pose(i, loop), halfway_truth[i]), keyframe_error + 0.02) << "pose " << i;
+  }
+  EXPECT_GT(worst_as_appended, 0.3);  // what the closures corrected (0.44 m)
+}
+
+// Without keyframes (loop closure off) the path is kept as given.
+TEST(LoopClosure, AnchoredTrajectoryWithoutKeyframesKeepsThePoses) {
+  const LoopClosure loop;
+  AnchoredTrajectory path;
+  path.append({1.0, 2.0, 0.5}, loop);
+  path.append({-3.0, 0.25, -2.0}, loop);
+  ASSERT_EQ(path.size(), 2u);
+  EXPECT_DOUBLE_EQ(path.pose(1, loop).x, -3.0);
+  EXPECT_DOUBLE_EQ(path.pose(1, loop).y, 0.25);
+  EXPECT_DOUBLE_EQ(path.pose(1, loop).theta, -2.0);
+  path.clear();
+  EXPECT_EQ(path.size(), 0u);
 }
 
 // Keyframes less than kMinKeyframeGap apart are the front end's business: nothing is tried against them.

@@ -18,6 +18,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
+#include "hector_style_mapping/anchored_trajectory.h"
 #include "hector_style_mapping/ros/node_options.h"
 #include "hector_style_mapping/ros/scan_input.h"
 #include "hector_style_mapping/slam_processor.h"
@@ -62,6 +63,8 @@ class MappingNode {
   // map -> odom from the matched pose and the odometry at the scan (map -> base without an odometry frame).
   void publishMapTransform(const ros::Time& stamp, const std::optional<geometry_msgs::TransformStamped>& odometry);
   void appendTrajectory(const ros::Time& stamp);
+  // After a loop closed: the trajectory's poses from their keyframes' new estimates, as the map.
+  void followLoopClosure();
   void reset(const std::string& why);
 
   NodeOptions options_;
@@ -85,6 +88,8 @@ class MappingNode {
   geometry_msgs::TransformStamped map_transform_;  // the last map -> odom (or -> base) sent
   bool have_map_transform_ = false;
   nav_msgs::Path trajectory_;
+  AnchoredTrajectory anchored_trajectory_;  // trajectory_'s poses, held to the keyframes
+  int trajectory_closures_ = 0;  // LoopClosure::closures() when trajectory_ last followed them
   int published_map_updates_ = -1;  // SlamProcessor::mapUpdateCount() when map_message_ was filled
   nav_msgs::OccupancyGrid map_message_;  // the last map converted, re-sent with a new stamp while unchanged
   ScanPoints scan_points_;  // reused: no allocation per scan
