@@ -26,6 +26,7 @@ struct MapperOptions {
   // How much the search prefers the translation constant velocity (or the guess) predicts: a candidate pays this
   // much mean field value (0..1: the share of points on a wall) per metre away from it. It only decides where
   // the scan cannot, along a featureless corridor. 0.1: a metre off must put a tenth more of the points on walls.
+  // Without a guess, scaled by the shorter of the last two scan intervals over the longer (motionPriorWeight).
   double search_motion_weight = 0.1;   // per m
   // Ours: loop closure (LoopClosure): the scans that update the map become keyframes of a pose graph, closed
   // when a keyframe matches an older one's submap; the map is then redrawn from the optimised keyframes. Off

@@ -127,6 +127,7 @@ class SlamProcessor {
   int search_count_ = 0;
   Pose2D previous_pose_;  // pose() before the last scan: with it, the search's prior
   std::vector<double> recent_intervals_;  // s, the last kRecentIntervals known ones
+  double last_interval_ = 0.0;  // s between the last scan and the one before (<= 0: not known)
   // The last kSearchedScans scans that updated the map, the last scan if it did not, and the search's field
   // built from them (on demand).
   std::vector<PlacedScan> window_;
@@ -144,6 +145,13 @@ ScanMatchResult matchThroughLevels(const ScanMatcher& matcher, const MultiResolu
 // SlamProcessor::covariance()'s formula for a match and the surface-normal Hessian at its pose; for other
 // front ends on the same matcher.
 Eigen::Matrix3d matchCovariance(const ScanMatchResult& match, const Eigen::Matrix3d& surface_normal_hessian);
+
+// The search's motion prior weight for a scan (search_motion_weight, without a guess). Constant velocity per scan
+// assumes a steady pace: where the interval before this scan and the one before the last differ (a log's pause,
+// say 38 s in which the robot moved 0.17 m, between scans 2.5 s apart), the last step says little of this one,
+// and the prior counts for the shorter interval over the longer. Either interval unknown (<= 0, not finite): all
+// of `weight`.
+double motionPriorWeight(double weight, double last_interval, double interval);
 
 }  // namespace hector_style_mapping
 

@@ -46,7 +46,13 @@ void SlamProcessor::reset(const Pose2D& start) {
   unmapped_scan_.reset();
   field_stale_ = true;
   recent_intervals_.clear();
+  last_interval_ = 0.0;
   loop_closure_ = LoopClosure{};
+}
+
+double motionPriorWeight(double weight, double last_interval, double interval) {
+  const bool known = last_interval > 0.0 && interval > 0.0 && std::isfinite(last_interval) && std::isfinite(interval);
+  return known ? weight * std::min(last_interval, interval) / std::max(last_interval, interval) : weight;
 }
 
 ScanMatchResult matchThroughLevels(const ScanMatcher& matcher, const MultiResolutionMap& map, const ScanPoints& scan,
@@ -88,7 +94,9 @@ void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double s
     const Eigen::Vector2d expected = guess_usable ? Eigen::Vector2d(guess->x, guess->y)
                                                   : Eigen::Vector2d(2.0 * pose_.x - previous_pose_.x,
                                                                     2.0 * pose_.y - previous_pose_.y);
-    const TranslationPrior prior{expected, options_.search_motion_weight};
+    const TranslationPrior prior{expected, guess_usable ? options_.search_motion_weight
+                                                        : motionPriorWeight(options_.search_motion_weight,
+                                                                            last_interval_, seconds_since_last_scan)};
     const SearchResult found =
         correlativeSearch(field_, scan, start, searchWindow(seconds_since_last_scan), prior);
     // Gauss-Newton on the finest level then settles it on the whole map, unless it wanders off further than
@@ -107,6 +115,7 @@ void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double s
 
   previous_pose_ = pose_;
   pose_ = last_match_.pose;
+  last_interval_ = seconds_since_last_scan;
   covariance_ = matchCovariance(last_match_, matcher_.surfaceNormalHessian(map_.finest(), scan, pose_));
 
   map_updated_by_last_scan_ = map_update_count_ == 0 || movedEnoughForMapUpdate();

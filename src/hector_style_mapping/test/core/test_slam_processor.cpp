@@ -357,6 +357,14 @@ TEST(SlamProcessor, TurningOnTheSpotEachScanIsSearchedAgainstTheOneBefore) {
   }
 }
 
+TEST(SlamProcessor, TheMotionPriorCountsLessAfterAChangeOfPace) {
+  EXPECT_DOUBLE_EQ(motionPriorWeight(0.1, 2.5, 2.5), 0.1);
+  EXPECT_DOUBLE_EQ(motionPriorWeight(0.1, 38.0, 1.9), 0.1 * 1.9 / 38.0);  // the scan after a pause
+  EXPECT_DOUBLE_EQ(motionPriorWeight(0.1, 1.0, 4.0), 0.025);              // a pause before this scan
+  EXPECT_DOUBLE_EQ(motionPriorWeight(0.1, 0.0, 2.0), 0.1);                // the first interval: not known
+  EXPECT_DOUBLE_EQ(motionPriorWeight(0.1, 2.0, std::numeric_limits<double>::quiet_NaN()), 0.1);
+}
+
 // The window comes from the median scan interval: a scan stamped 1 ms after the last one, though it was
 // taken as far from it as the others, does not shrink the window to nothing.
 TEST(SlamProcessor, OddStampsDoNotShrinkTheSearchWindow) {
