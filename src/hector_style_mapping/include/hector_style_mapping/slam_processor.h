@@ -54,8 +54,9 @@ class SlamProcessor {
   // The match starts at `guess` (odometry, say) if given, otherwise at the last pose, as hector_mapping. With
   // the search on (the options' search_window_linear and _angular > 0), a correlative search (correlativeSearch)
   // looks for the scan within a window round the start, against the field of the last kSearchedScans scans
-  // that updated the map and the last scan, and Gauss-Newton on the finest level refines its pose (unless it strays further
-  // than the search's resolution: then the map has drifted from the recent scans, and the search's pose stands).
+  // that updated the map and the last scan, and Gauss-Newton on the finest level refines its pose (unless it
+  // strays further than the search's resolution: then the map has drifted from the recent scans, and the
+  // search's pose stands).
   // Without it, Gauss-Newton goes from the start through the levels, coarsest first.
   //
   // The window: the motion a robot could plausibly make (kPlausibleSpeed, kPlausibleTurnRate) over the scan
