@@ -12,6 +12,11 @@ A log is text, one message per line. The laser lines are
 pose was corrected by the authors' SLAM and serves as ground truth. Other lines (ODOM, PARAM, NEFF,
 comments) are skipped, except PARAM robot_frontlaser_offset and robot_rearlaser_offset (the
 lasers' distances ahead of and behind the robot's centre).
+
+A log cut short (a last line without its end, or a .gz that stops early, as an interrupted download
+leaves it) keeps the scans before the cut and says where it was cut (`CarmenLog.truncated`); a
+malformed line anywhere else is an error. Stamps that go back are kept as logged and counted
+(`CarmenLog.stamps_back`): a mapper fed the bag reports and drops those scans.
 """
 import gzip
 import math
@@ -33,6 +38,7 @@ class CarmenScan:
     robot_pose: tuple            # (x, y, theta) of the robot (base) in the log's world frame
     max_range: Optional[float] = None  # m, when the line says (ROBOTLASER1)
     kind: str = 'FLASER'
+    line: int = 0                # its line in the log
 
 
 @dataclass
@@ -41,6 +47,8 @@ class CarmenLog:
     front_laser_offset: float = 0.0  # m the front laser sits ahead of the robot's centre
     rear_laser_offset: float = 0.0   # m the rear laser sits behind it
     skipped: int = 0                 # lines of other types
+    truncated: Optional[str] = None  # where and how the log was cut short, if it was
+    stamps_back: List[int] = field(default_factory=list)  # lines of scans stamped before the scan before them
 
 
 def flaser_increment(n):
@@ -97,34 +105,58 @@ def _robotlaser1(words, where):
     return CarmenScan(stamp, ranges, start, resolution, (lx, ly, lt), (rx, ry, rt), max_range, 'ROBOTLASER1')
 
 
+def _scan(words, where, log, lasers):
+    """The scan on a line of one of `lasers`' types, None for any other line (PARAMs are noted in `log`)."""
+    if words[0] == 'PARAM' and len(words) >= 3 and words[1] == 'robot_frontlaser_offset':
+        log.front_laser_offset = _numbers(words, 2, 1, where, 'PARAM robot_frontlaser_offset')[0]
+    elif words[0] == 'PARAM' and len(words) >= 3 and words[1] == 'robot_rearlaser_offset':
+        log.rear_laser_offset = _numbers(words, 2, 1, where, 'PARAM robot_rearlaser_offset')[0]
+    elif words[0] in lasers and words[0] == 'FLASER':
+        return _flaser(words, where, log.front_laser_offset)
+    elif words[0] in lasers and words[0] == 'RLASER':
+        return _flaser(words, where, log.rear_laser_offset)
+    elif words[0] in lasers and words[0] == 'ROBOTLASER1':
+        return _robotlaser1(words, where)
+    else:
+        log.skipped += 1
+    return None
+
+
 def read_log(path, lasers=('FLASER', 'ROBOTLASER1')):
     """The laser scans of a CARMEN log (plain or .gz), in file order. `lasers`: the message types to
-    take (RLASER too if asked). Raises CarmenLogError naming the file and line of a malformed one."""
+    take (RLASER too if asked). Raises CarmenLogError naming the file and line of a malformed one,
+    except a last line cut short (see the module's doc)."""
     log = CarmenLog()
     opener = gzip.open if path.endswith('.gz') else open
-    with opener(path, 'rt', errors='replace') as f:
-        for number, line in enumerate(f, 1):
-            words = line.split()
-            if not words or words[0].startswith('#'):
-                continue
-            where = '%s:%d' % (path, number)
-            if words[0] == 'PARAM' and len(words) >= 3 and words[1] == 'robot_frontlaser_offset':
-                log.front_laser_offset = _numbers(words, 2, 1, where, 'PARAM robot_frontlaser_offset')[0]
-            elif words[0] == 'PARAM' and len(words) >= 3 and words[1] == 'robot_rearlaser_offset':
-                log.rear_laser_offset = _numbers(words, 2, 1, where, 'PARAM robot_rearlaser_offset')[0]
-            elif words[0] in lasers and words[0] == 'FLASER':
-                log.scans.append(_flaser(words, where, log.front_laser_offset))
-            elif words[0] in lasers and words[0] == 'RLASER':
-                log.scans.append(_flaser(words, where, log.rear_laser_offset))
-            elif words[0] in lasers and words[0] == 'ROBOTLASER1':
-                log.scans.append(_robotlaser1(words, where))
-            else:
-                log.skipped += 1
+    number = 0
+    try:
+        with opener(path, 'rt', errors='replace') as f:
+            for number, line in enumerate(f, 1):
+                words = line.split()
+                if not words or words[0].startswith('#'):
+                    continue
+                where = '%s:%d' % (path, number)
+                try:
+                    scan = _scan(words, where, log, lasers)
+                except CarmenLogError as e:
+                    if line.endswith('\n'):
+                        raise
+                    log.truncated = '%s (the file ends in this line: cut short?)' % e
+                    break
+                if scan is None:
+                    continue
+                scan.line = number
+                if log.scans and scan.stamp < log.scans[-1].stamp:
+                    log.stamps_back.append(number)
+                log.scans.append(scan)
+    except EOFError as e:  # gzip: the compressed stream stops early
+        log.truncated = '%s: the compressed file ends early, after line %d (%s)' % (path, number, e)
     return log
 
 
 def saturation_range(log):
     """The range a scanner reports for "no return" when the log does not say: the largest reading
     in the log (SICK scanners report their maximum, 81.83 m in the Intel log, 50 m in ACES')."""
-    largest = [max(s.ranges) for s in log.scans if s.max_range is None and s.ranges]
+    largest = [max(finite) for finite in ([r for r in s.ranges if math.isfinite(r)]
+                                          for s in log.scans if s.max_range is None) if finite]
     return max(largest) if largest else None

@@ -1,6 +1,9 @@
 """CARMEN logs: the reader (FLASER, ROBOTLASER1, bad lines) and the bag they become."""
 import gzip
 import math
+import os
+import subprocess
+import sys
 
 import pytest
 import rosbag
@@ -97,3 +100,59 @@ def test_a_log_without_scans_is_refused(tmp_path):
     log = read_log(write(tmp_path, 'ODOM 0 0 0 0 0 0 1 h 1\n'))
     with pytest.raises(ValueError, match='no laser scans'):
         write_bag(log, str(tmp_path / 'empty.bag'))
+
+
+def test_a_log_cut_short_keeps_the_scans_before_the_cut(tmp_path):
+    whole = flaser([1.0, 2.0, 3.0], stamp=1.0) + flaser([1.5, 2.5, 3.5], stamp=2.0)
+    path = write(tmp_path, whole + flaser([1.0, 2.0, 3.0], stamp=3.0)[:20])
+    log = read_log(path)
+    assert [s.stamp for s in log.scans] == [1.0, 2.0]
+    assert '%s:3: ' % path in log.truncated and 'cut short' in log.truncated
+    # The same bad line with its end is not a cut: it is an error.
+    with pytest.raises(CarmenLogError, match=':3: '):
+        read_log(write(tmp_path, whole + flaser([1.0, 2.0, 3.0], stamp=3.0)[:20] + '\n', 'whole.txt'))
+
+
+def test_a_gz_log_cut_short_keeps_the_scans_before_the_cut(tmp_path):
+    text = ''.join(flaser([1.0 + i, 2.0, 3.0], stamp=float(i)) for i in range(2000))
+    path = write(tmp_path, text, 'log.gz')
+    with open(path, 'rb') as f:
+        data = f.read()
+    with open(path, 'wb') as f:
+        f.write(data[:len(data) // 2])
+    log = read_log(path)
+    assert 0 < len(log.scans) < 2000
+    assert [s.stamp for s in log.scans] == [float(i) for i in range(len(log.scans))]
+    assert 'compressed file ends early' in log.truncated
+
+
+def test_stamps_going_back_are_kept_and_counted(tmp_path):
+    text = ''.join(flaser([1.0, 2.0, 3.0], stamp=t) for t in (1.0, 2.0, 1.5, 3.0, 2.9))
+    log = read_log(write(tmp_path, text))
+    assert [s.stamp for s in log.scans] == [1.0, 2.0, 1.5, 3.0, 2.9]
+    assert log.stamps_back == [3, 5]
+
+
+def test_readings_that_are_not_numbers_stay_out_of_the_saturation_range(tmp_path):
+    log = read_log(write(tmp_path, flaser([1.0, float('nan'), 7.5]) + flaser([float('inf'), 2.0, 3.0], stamp=11.0)))
+    assert saturation_range(log) == pytest.approx(7.5)
+    bag_path = str(tmp_path / 'log.bag')
+    write_bag(log, bag_path)
+    with rosbag.Bag(bag_path) as bag:
+        ranges = [list(msg.ranges) for _, msg, _ in bag.read_messages(topics=['/scan'])]
+    # NaN stays an erroneous reading and inf no return (REP 117); 7.5, the saturation value, is no return too.
+    assert math.isnan(ranges[0][1]) and ranges[0][2] == math.inf and ranges[1][0] == math.inf
+    assert ranges[0][0] == 1.0 and ranges[1][1:] == [2.0, 3.0]
+
+
+def test_carmen_to_bag_warns_of_a_cut_and_writes_what_came_before(tmp_path):
+    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'scripts', 'carmen_to_bag')
+    whole = flaser([1.0, 2.0, 3.0], stamp=1.0) + flaser([1.5, 2.5, 3.5], stamp=0.5)
+    log_path = write(tmp_path, whole + 'FLASER 3 1.0 2')
+    bag_path = str(tmp_path / 'cut.bag')
+    run = subprocess.run([sys.executable, script, log_path, bag_path], capture_output=True, text=True, timeout=60)
+    assert run.returncode == 0, run.stderr
+    assert 'warning: %s:3: ' % log_path in run.stderr and 'the 2 scans before it are in the bag' in run.stderr
+    assert '1 scan is stamped before the scan before it (first at %s:2)' % log_path in run.stderr
+    with rosbag.Bag(bag_path) as bag:
+        assert bag.get_message_count('/scan') == 2
