@@ -335,7 +335,7 @@ bool GazeboRosApi::getPhysicsProperties(gazebo_msgs::GetPhysicsProperties::Reque
   res.ode_config.sor_pgs_precon_iters = 0;
   res.ode_config.sor_pgs_iters = s.solver_iterations;
   res.ode_config.sor_pgs_w = info.m_sor;
-  res.ode_config.sor_pgs_rms_error_tol = info.m_leastSquaresResidualThreshold;
+  res.ode_config.sor_pgs_rms_error_tol = s.solver_tolerance;  // m/s a sweep must change (contact_solver.h)
   res.ode_config.contact_surface_layer = info.m_linearSlop;
   res.ode_config.contact_max_correcting_vel = 100.0;
   res.ode_config.cfm = info.m_globalCfm;
@@ -352,7 +352,9 @@ bool GazeboRosApi::setPhysicsProperties(gazebo_msgs::SetPhysicsProperties::Reque
   s.max_step_size = req.time_step;
   s.real_time_update_rate = req.max_update_rate;
   s.gravity = toEigen(req.gravity);
+  // 0 leaves these as they are, so that a request built from zeros only sets what it names.
   if (req.ode_config.sor_pgs_iters > 0) s.solver_iterations = static_cast<int>(req.ode_config.sor_pgs_iters);
+  if (req.ode_config.sor_pgs_rms_error_tol > 0) s.solver_tolerance = req.ode_config.sor_pgs_rms_error_tol;
   try {
     sim_.physics().setSettings(s);
   } catch (const DescriptionError& e) {

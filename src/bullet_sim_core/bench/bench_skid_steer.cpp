@@ -2,7 +2,7 @@
 //
 //   bench_skid_steer URDF --torque T --joint NAME=RAD_PER_S [--joint ...] [--z 0] [--yaw 0]
 //       [--settle 0.5] [--seconds 4] [--window 1] [--gate CENTER,HALF [--gate-seconds 1]]
-//       [--trace BIN_SECONDS] [--contacts]
+//       [--trace BIN_SECONDS] [--contacts] [--iters 50] [--tolerance 1e-5] [--cold]
 //
 // The counterpart of scripts/bench_skid_steer_pybullet.py, with the same protocol: a ground
 // plane of friction 1 (the SDF worlds' built-in ground_plane), the URDF (xacro-expanded) with
@@ -18,7 +18,10 @@
 // depends on the heading relative to the world axes; scripts/bench_skid_steer.py explains).
 // Also: the base height's spread and the largest tilt over the counted samples, the wall time
 // per physics step, with --trace the means in bins of BIN_SECONDS ([t, yaw rate, forward speed,
-// heading]), with --contacts every link's contact points with the ground at the end.
+// heading]), with --contacts every link's contact points with the ground at the end, and the
+// solver's sweeps per solve (--iters and --tolerance set its sweeps and early stop, as a world's
+// <iters> and PhysicsSettings::solver_tolerance do; --cold starts every step's solve from zero
+// impulses, as Bullet's own solver does).
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
 #include <algorithm>
@@ -53,13 +56,15 @@ struct Options {
   double gate_seconds = 1.0;
   double trace = 0.0;  // s per bin; 0: no trace
   bool contacts = false;
+  bullet_sim::PhysicsSettings physics;  // 1 ms steps, gravity -9.8 z
+  bool cold = false;
 };
 
 [[noreturn]] void usage(const std::string& why) {
   std::cerr << "bench_skid_steer: " << why << "\n"
             << "usage: bench_skid_steer URDF --torque T --joint NAME=RAD_PER_S [--joint ...] [--z 0] [--yaw 0]\n"
             << "       [--settle 0.5] [--seconds 4] [--window 1] [--gate CENTER,HALF [--gate-seconds 1]]\n"
-            << "       [--trace BIN_SECONDS] [--contacts]\n";
+            << "       [--trace BIN_SECONDS] [--contacts] [--iters 50] [--tolerance 1e-5] [--cold]\n";
   std::exit(2);
 }
 
@@ -80,6 +85,9 @@ Options parseArgs(int argc, char** argv) {
     else if (a == "--gate-seconds") o.gate_seconds = std::atof(value().c_str());
     else if (a == "--trace") o.trace = std::atof(value().c_str());
     else if (a == "--contacts") o.contacts = true;
+    else if (a == "--iters") o.physics.solver_iterations = std::atoi(value().c_str());
+    else if (a == "--tolerance") o.physics.solver_tolerance = std::atof(value().c_str());
+    else if (a == "--cold") o.cold = true;
     else if (a == "--gate") {
       const std::string v = value();
       if (std::sscanf(v.c_str(), "%lf,%lf", &o.gate_center, &o.gate_half) != 2 || !(o.gate_half > 0))
@@ -189,7 +197,8 @@ int main(int argc, char** argv) {
     const std::string base_dir = o.urdf.find('/') == std::string::npos ? "." : o.urdf.substr(0, o.urdf.rfind('/'));
     const bullet_sim::ModelDescription description =
         bullet_sim::parseUrdf(text.str(), o.urdf, bullet_sim::ResourceResolver::fromEnvironment(), base_dir);
-    bullet_sim::PhysicsWorld world;  // 1 ms step, gravity -9.8 z
+    bullet_sim::PhysicsWorld world(o.physics);
+    world.solver().setWarmStart(!o.cold);
     const bullet_sim::PhysicsModel& ground = world.addModel(groundPlane(), Eigen::Isometry3d::Identity());
     Eigen::Isometry3d spawn = Eigen::Isometry3d::Identity();
     spawn.translation().z() = o.z;
@@ -210,6 +219,7 @@ int main(int argc, char** argv) {
     const long gate_steps = std::lround(o.gate_seconds / dt);
     for (long i = 0; i < settle_steps; ++i) world.step();
     for (const auto& [j, speed] : commands) model.setJointMotor(j, 0.0, speed, 0.0, o.torque);
+    world.solver().resetCounters();
 
     double yaw_sum = 0, fwd_sum = 0, lat_sum = 0, z_sum = 0, z_sq = 0, tilt_max = 0;
     double z_min = 1e9, z_max = -1e9, step_seconds = 0;
@@ -255,8 +265,9 @@ int main(int argc, char** argv) {
       ++n;
       if (o.gated && n >= gate_steps && !trace_steps) break;
     }
-    std::printf("{\"engine\": \"bullet_sim\", \"samples\": %ld, \"end_time\": %.4g, \"us_per_step\": %.4g", n, done * dt,
-                1e6 * step_seconds / std::max(1L, done));
+    std::printf("{\"engine\": \"bullet_sim\", \"samples\": %ld, \"end_time\": %.4g, \"us_per_step\": %.4g, "
+                "\"sweeps_per_solve\": %.4g", n, done * dt, 1e6 * step_seconds / std::max(1L, done),
+                static_cast<double>(world.solver().sweeps()) / std::max(1L, world.solver().solves()));
     if (n > 0) {
       const double z_mean = z_sum / n;
       std::printf(", \"yaw_rate\": %.9g, \"forward_speed\": %.9g, \"lateral_speed\": %.9g, \"z_mean\": %.9g, "

@@ -3,11 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include <BulletCollision/CollisionDispatch/btManifoldResult.h>
 #include <BulletDynamics/Featherstone/btMultiBodyFixedConstraint.h>
-#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
 #include "bullet_sim_core/description_error.h"
+#include "bullet_sim_core/contact_solver.h"
 
 namespace bullet_sim {
 namespace {
@@ -17,99 +16,6 @@ btScalar minimumFriction(const btCollisionObject* a, const btCollisionObject* b)
   return std::min(a->getFriction(), b->getFriction());
 }
 
-// Isotropic Coulomb friction for btMultiBody contacts.
-//
-// btMultiBodyConstraintSolver gives every contact two friction rows along fixed directions
-// that depend only on the contact normal (btPlaneSpace1: world y and x on a flat floor; the
-// velocity-dependent direction of Bullet's rigid-body solver is commented out there, and
-// cached directions are overwritten), then scales the pair of impulses back onto the friction
-// cone. Each row's impulse is the one that would stop the slip along it, i.e. weighted by that
-// row's effective mass, so the clamped force only opposes the slip when both rows are alike.
-// At a wheel they are not: along the wheel the contact is light (the wheel spins), across it
-// heavy (the vehicle has to move). With the rows along a wheel's axes (a vehicle heading 0 or
-// 90 degrees) nearly all of the friction goes sideways: spawned heading 0, m_robot, the RE510
-// vehicle and skid4 turned on the spot at 35, 17 and 14 % of the rate Coulomb friction gives
-// (which they reach at 45 degrees), and the rate rose and fell with the heading every 90
-// degrees. PyBullet, on the same solver, does the same (scripts/bench_skid_steer.py).
-//
-// After Bullet has set up the contacts, every contact that slides faster than kSlipSpeed gets
-// its two friction rows rebuilt along the slip and across it (by Bullet's own row set-up), so
-// the clamped force opposes the slip whatever the heading. Contacts that stick keep Bullet's
-// rows: below the cone's limit any two directions hold the same.
-class IsotropicFrictionSolver : public btMultiBodyConstraintSolver {
- public:
-  static constexpr btScalar kSlipSpeed = 1e-4;  // m/s
-
- protected:
-  void convertContacts(btPersistentManifold** manifolds, int count, const btContactSolverInfo& info) override {
-    btMultiBodyConstraintSolver::convertContacts(manifolds, count, info);
-    // Bullet lays out two friction rows per contact, in the contacts' order.
-    if (!(info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) ||
-        m_multiBodyFrictionContactConstraints.size() != 2 * m_multiBodyNormalContactConstraints.size())
-      return;
-    int contact = 0;
-    for (int m = 0; m < count; ++m) {
-      btPersistentManifold* manifold = manifolds[m];
-      if (!btMultiBodyLinkCollider::upcast(manifold->getBody0()) &&
-          !btMultiBodyLinkCollider::upcast(manifold->getBody1()))
-        continue;  // a rigid-body pair: Bullet's rigid-body solver already follows the slip
-      for (int k = 0; k < manifold->getNumContacts(); ++k) {
-        btManifoldPoint& point = manifold->getContactPoint(k);
-        if (!(point.getDistance() <= manifold->getContactProcessingThreshold())) continue;
-        if (contact >= m_multiBodyNormalContactConstraints.size()) return;
-        const btMultiBodySolverConstraint& normal = m_multiBodyNormalContactConstraints[contact++];
-        if (normal.m_originalContactPoint != &point) return;  // not Bullet's layout: leave its rows
-        alongSlip(manifold, point, contact - 1, normal.m_frictionIndex, info);
-      }
-    }
-  }
-
- private:
-  // Relative velocity (A minus B) along a row's direction, as the solver computes it.
-  btScalar rowVelocity(const btMultiBodySolverConstraint& row) const {
-    btScalar v = 0;
-    if (row.m_multiBodyA) {
-      const btScalar* jacobian = &m_data.m_jacobians[row.m_jacAindex];
-      const btScalar* velocity = row.m_multiBodyA->getVelocityVector();
-      for (int i = 0; i < row.m_multiBodyA->getNumDofs() + 6; ++i) v += jacobian[i] * velocity[i];
-    } else if (row.m_solverBodyIdA >= 0) {
-      if (const btRigidBody* body = m_tmpSolverBodyPool[row.m_solverBodyIdA].m_originalBody)
-        v += row.m_contactNormal1.dot(body->getLinearVelocity()) +
-             row.m_relpos1CrossNormal.dot(body->getAngularVelocity());
-    }
-    if (row.m_multiBodyB) {
-      const btScalar* jacobian = &m_data.m_jacobians[row.m_jacBindex];
-      const btScalar* velocity = row.m_multiBodyB->getVelocityVector();
-      for (int i = 0; i < row.m_multiBodyB->getNumDofs() + 6; ++i) v += jacobian[i] * velocity[i];
-    } else if (row.m_solverBodyIdB >= 0) {
-      if (const btRigidBody* body = m_tmpSolverBodyPool[row.m_solverBodyIdB].m_originalBody)
-        v += row.m_contactNormal2.dot(body->getLinearVelocity()) +
-             row.m_relpos2CrossNormal.dot(body->getAngularVelocity());
-    }
-    return v;
-  }
-
-  void alongSlip(btPersistentManifold* manifold, btManifoldPoint& point, int contact, int first_row,
-                 const btContactSolverInfo& info) {
-    const btMultiBodySolverConstraint& row1 = m_multiBodyFrictionContactConstraints[first_row];
-    const btMultiBodySolverConstraint& row2 = m_multiBodyFrictionContactConstraints[first_row + 1];
-    const btVector3 slip = rowVelocity(row1) * row1.m_contactNormal1 + rowVelocity(row2) * row2.m_contactNormal1;
-    const btScalar speed = slip.length();
-    if (!(speed > kSlipSpeed)) return;
-    point.m_lateralFrictionDir1 = slip / speed;
-    point.m_lateralFrictionDir2 = point.m_lateralFrictionDir1.cross(point.m_normalWorldOnB);
-    auto* body0 = const_cast<btCollisionObject*>(manifold->getBody0());
-    auto* body1 = const_cast<btCollisionObject*>(manifold->getBody1());
-    for (int r = 0; r < 2; ++r) {
-      // Appended by Bullet's set-up, then moved into the old row's place.
-      const btMultiBodySolverConstraint& row =
-          addMultiBodyFrictionConstraint(r == 0 ? point.m_lateralFrictionDir1 : point.m_lateralFrictionDir2, 0,
-                                         manifold, contact, point, body0, body1, info.m_sor, info);
-      m_multiBodyFrictionContactConstraints[first_row + r] = row;
-      m_multiBodyFrictionContactConstraints.pop_back();
-    }
-  }
-};
 // Bullet predicts every link's pose at the end of the step for continuous collision detection,
 // which the simulator does not use (multibody links are not swept): a pass of forward kinematics
 // per step for nothing.
@@ -129,7 +35,7 @@ PhysicsWorld::PhysicsWorld(const PhysicsSettings& settings)
       plane_cylinder_(makeCylinderPlaneAlgorithm(true)),
       dispatcher_(std::make_unique<btCollisionDispatcher>(collision_config_.get())),
       broadphase_(std::make_unique<btDbvtBroadphase>()),
-      solver_(std::make_unique<IsotropicFrictionSolver>()),
+      solver_(std::make_unique<ContactSolver>()),
       world_(std::make_unique<DiscreteMultiBodyWorld>(dispatcher_.get(), broadphase_.get(), solver_.get(),
                                                          collision_config_.get())) {
   gCalculateCombinedFrictionCallback = &minimumFriction;
@@ -159,12 +65,14 @@ void PhysicsWorld::setSettings(const PhysicsSettings& s) {
   if (!s.gravity.allFinite()) throw DescriptionError("physics: gravity: expected three finite numbers");
   if (s.solver_iterations < 1)
     throw DescriptionError("physics: solver iters: expected at least 1, got " + std::to_string(s.solver_iterations));
+  if (!std::isfinite(s.solver_tolerance) || s.solver_tolerance < 0)
+    throw DescriptionError("physics: solver tolerance: expected a velocity >= 0 m/s, got " +
+                           std::to_string(s.solver_tolerance));
   settings_ = s;
   world_->setGravity(toBullet(s.gravity));
   world_->getSolverInfo().m_numIterations = s.solver_iterations;
-  // Every sweep runs (Bullet's residual threshold stays 0): PyBullet's early stop at 1e-7 saves
-  // a wheeled robot's step 30 % but lets held wheels creep again (25 um/s where 50 full sweeps
-  // leave under 20, WheelsHeldStillHoldTheVehicleStill); 1e-9 stops no earlier than 50.
+  // Bullet's residual is the largest squared change of a row's velocity in a sweep.
+  world_->getSolverInfo().m_leastSquaresResidualThreshold = s.solver_tolerance * s.solver_tolerance;
 }
 
 PhysicsModel& PhysicsWorld::addModel(const ModelDescription& description, const Eigen::Isometry3d& pose) {

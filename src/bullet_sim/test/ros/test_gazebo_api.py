@@ -50,17 +50,22 @@ class GazeboApiTest(unittest.TestCase):
         self.assertTrue(props.success)
         self.assertIn('ground_plane', props.model_names)
 
-    def test_physics_properties_report_and_change_the_solver_sweeps(self):
+    def test_physics_properties_report_and_change_the_solver_sweeps_and_tolerance(self):
         physics = self.gz.get_physics_properties()
         self.assertAlmostEqual(physics.time_step, 0.001, places=9)  # empty.world
         self.assertEqual(physics.ode_config.sor_pgs_iters, 50)      # SDF's default iters
+        self.assertAlmostEqual(physics.ode_config.sor_pgs_rms_error_tol, 1e-5, places=12)  # our early stop, m/s
         config = physics.ode_config
         config.sor_pgs_iters = 20
+        config.sor_pgs_rms_error_tol = 2e-5
         done = self.gz.set_physics_properties(time_step=physics.time_step, max_update_rate=physics.max_update_rate,
                                               gravity=physics.gravity, ode_config=config)
         self.assertTrue(done.success, done.status_message)
-        self.assertEqual(self.gz.get_physics_properties().ode_config.sor_pgs_iters, 20)
+        changed = self.gz.get_physics_properties().ode_config
+        self.assertEqual(changed.sor_pgs_iters, 20)
+        self.assertAlmostEqual(changed.sor_pgs_rms_error_tol, 2e-5, places=12)
         config.sor_pgs_iters = 50
+        config.sor_pgs_rms_error_tol = 1e-5
         self.gz.set_physics_properties(time_step=physics.time_step, max_update_rate=physics.max_update_rate,
                                        gravity=physics.gravity, ode_config=config)
 

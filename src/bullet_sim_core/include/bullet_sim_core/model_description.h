@@ -143,10 +143,13 @@ struct PhysicsSettings {
   double real_time_factor = 1.0;       // 0: as fast as possible
   double real_time_update_rate = 1000; // Hz; with max_step_size gives the target factor, as in Gazebo
   Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.8);
-  // Sweeps of the constraint solver per step: SDF's <ode|bullet><solver><iters>, whose default
-  // (and PyBullet's) is 50. Fewer leave joint motors short of their target in contact: at
-  // Bullet's own 10 a Pioneer held by its wheel motors crept 0.2 mm/s, at 50 2 um/s.
+  // Sweeps of the constraint solver per step, at most: SDF's <ode|bullet><solver><iters>, whose
+  // default (and PyBullet's) is 50. From zero impulses fewer leave joint motors short of their
+  // target in contact (at Bullet's own 10 a Pioneer held by its wheel motors crept 0.2 mm/s).
   int solver_iterations = 50;
+  // Where the rows start from the last step's impulses (contact_solver.h), the sweeps stop once
+  // one changes no constraint's velocity by more than this, m/s or rad/s. 0: every sweep runs.
+  double solver_tolerance = 1e-5;
 };
 
 struct PlacedModel {

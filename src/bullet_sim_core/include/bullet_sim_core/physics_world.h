@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "bullet_sim_core/contact_solver.h"
 #include "bullet_sim_core/model_description.h"
 #include "bullet_sim_core/physics_model.h"
 
@@ -36,6 +37,8 @@ class PhysicsWorld {
   const PhysicsSettings& settings() const { return settings_; }
   void setSettings(const PhysicsSettings& settings);  // throws DescriptionError on bad values
 
+  // The solver's counts of solves and sweeps (see contact_solver.h), for benchmarks and tests.
+  ContactSolver& solver() { return *solver_; }
   btMultiBodyDynamicsWorld& bulletWorld() { return *world_; }
   const btMultiBodyDynamicsWorld& bulletWorld() const { return *world_; }
   // Fixes `link_b` of `model_b` to `link_a` of `model_a` where they are now (a fixed constraint
@@ -56,7 +59,7 @@ class PhysicsWorld {
   std::unique_ptr<btCollisionAlgorithmCreateFunc> cylinder_cylinder_;
   std::unique_ptr<btCollisionDispatcher> dispatcher_;
   std::unique_ptr<btDbvtBroadphase> broadphase_;
-  std::unique_ptr<btMultiBodyConstraintSolver> solver_;  // friction along the slip: see physics_world.cpp
+  std::unique_ptr<ContactSolver> solver_;
   std::unique_ptr<btMultiBodyDynamicsWorld> world_;
   struct Attachment {
     int id = 0;
