@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Navigation success rate, time to goal and whole-system real-time factor (issue 11): each robot's
-navigation bring-up (simulator, mapper, move_base), headless and unthrottled on a private roscore,
-drives to seeded random reachable goals one after the other.
+navigation bring-up (simulator, mapper, move_base), headless on a private roscore at the robot's
+pace (m_robot 20x real time, the Pioneer 10x: what the whole stack keeps up with on 2 cores;
+--rtf 0 runs as fast as the simulator goes), drives to seeded random reachable goals one after
+the other.
 
   bench_navigation.py [--robot m_robot|pioneer] [--goals N] [--seed S] [--rtf F | --realtime]
                       [--mapper hector|gmapping] [--cpu] [--trace CSV]
@@ -55,11 +57,11 @@ ROBOTS = {
     'm_robot': dict(launch=['find_frontier', 'm_robot_navigation.launch'], model='m_robot',
                     walls=os.path.join(ROOT, 'src', 'm_robot_sim', 'config', 'capstone_map_walls.yaml'),
                     spawn=(0.0, 0.0, 0.0), outline=(0.26, 0.22, 0.0), inscribed=0.12, max_vel=0.3,
-                    goal_clearance=0.25, xy_tolerance=0.15),
+                    goal_clearance=0.25, xy_tolerance=0.15, rtf=20.0),
     'pioneer': dict(launch=['pioneer_2dnav', 'pioneer_navigation.launch'], model='pioneer',
                     walls=os.path.join(ROOT, 'src', 'pioneer_sim', 'config', 'pioneer_maze_walls.yaml'),
                     spawn=(-3.2, -3.2, 0.0), outline=(0.44, 0.38, -0.045), inscribed=0.22, max_vel=0.5,
-                    goal_clearance=0.42, xy_tolerance=0.2),
+                    goal_clearance=0.42, xy_tolerance=0.2, rtf=10.0),
 }
 
 
@@ -258,8 +260,9 @@ def main():
     parser.add_argument('--robot', choices=sorted(ROBOTS), help='one robot (default: both, each in its own process)')
     parser.add_argument('--goals', type=int, default=50, help='goals per robot (default 50)')
     parser.add_argument('--seed', type=int, default=1, help='the goals\' random seed (default 1)')
-    parser.add_argument('--rtf', type=float, default=0.0,
-                        help='the simulator\'s target real-time factor (default 0: as fast as it goes)')
+    parser.add_argument('--rtf', type=float,
+                        help='the simulator\'s target real-time factor (default: the robot\'s, m_robot 20, the Pioneer '
+                             '10; 0: as fast as it goes)')
     parser.add_argument('--realtime', action='store_true', help='the same as --rtf 1')
     parser.add_argument('--mapper', choices=['hector', 'gmapping'], default='hector',
                         help='the Pioneer\'s mapper: hector_mapping (default) or the report\'s slam_gmapping')
@@ -269,8 +272,10 @@ def main():
     args = parser.parse_args()
     rtf = 1.0 if args.realtime else args.rtf
     if not args.robot:
-        extra = ['--goals', str(args.goals), '--seed', str(args.seed), '--rtf', str(rtf)]
+        extra = ['--goals', str(args.goals), '--seed', str(args.seed)] + ([] if rtf is None else ['--rtf', str(rtf)])
         return each_robot_in_its_own_process(__file__, sorted(ROBOTS), extra)
+    if rtf is None:
+        rtf = ROBOTS[args.robot]['rtf']
     if args.mapper == 'gmapping' and args.robot != 'pioneer':
         parser.error('--mapper gmapping: only the Pioneer has odometry for slam_gmapping')
     print('command: scripts/bench_navigation.py --robot %s --goals %d --seed %d --rtf %g%s%s' % (
