@@ -16,7 +16,7 @@ lasers' distances ahead of and behind the robot's centre).
 A log cut short (a last line without its end, or a .gz that stops early, as an interrupted download
 leaves it) keeps the scans before the cut and says where it was cut (`CarmenLog.truncated`); a
 malformed line anywhere else is an error. Stamps that go back are kept as logged and counted
-(`CarmenLog.stamps_back`): a mapper fed the bag reports and drops those scans.
+(`CarmenLog.stamps_back`; the Intel log has 4, by up to 0.9 s): a bag plays them in stamp order.
 """
 import gzip
 import math
