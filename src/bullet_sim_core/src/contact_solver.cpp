@@ -27,84 +27,127 @@ constexpr btScalar kSlipSpeed = 1e-4;  // m/s
 // (which they reach at 45 degrees), and the rate rose and fell with the heading every 90
 // degrees. PyBullet, on the same solver, does the same (scripts/bench_skid_steer.py).
 //
-// After Bullet has set up the contacts, every contact that slides faster than kSlipSpeed gets
-// its two friction rows rebuilt along the slip and across it (by Bullet's own row set-up), so
-// the clamped force opposes the slip whatever the heading. Contacts that stick keep Bullet's
-// rows: below the cone's limit any two directions hold the same.
+// Every contact that slides faster than kSlipSpeed gets its two friction rows along the slip
+// and across it, so the clamped force opposes the slip whatever the heading. Contacts that stick
+// keep Bullet's directions: below the cone's limit any two directions hold the same. The rows are
+// set up once, here, in place of Bullet's convertMultiBodyContact (which picks btPlaneSpace1's
+// directions without a way to choose others); setting up a row (its response, M^-1 J^T) is most of
+// a wheeled robot's step, and rebuilding two rows per sliding contact after Bullet's cost it 8 %.
 void ContactSolver::convertContacts(btPersistentManifold** manifolds, int count, const btContactSolverInfo& info) {
-  btMultiBodyConstraintSolver::convertContacts(manifolds, count, info);
-  // Bullet lays out a normal row per touching point of each multibody manifold, in order, and
-  // two friction rows per contact. Walk them, noting which contacts are their manifold's only one.
-  lone_contact_.assign(m_multiBodyNormalContactConstraints.size(), false);
-  const bool two_directions = (info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) &&
-                              m_multiBodyFrictionContactConstraints.size() == 2 * m_multiBodyNormalContactConstraints.size();
-  int contact = 0;
-  bool bullets_layout = two_directions;
-  for (int m = 0; m < count && bullets_layout; ++m) {
+  lone_contact_.clear();
+  const bool two_directions = info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS;
+  for (int m = 0; m < count; ++m) {
     btPersistentManifold* manifold = manifolds[m];
-    if (!btMultiBodyLinkCollider::upcast(manifold->getBody0()) && !btMultiBodyLinkCollider::upcast(manifold->getBody1()))
-      continue;  // a rigid-body pair: Bullet's rigid-body solver follows the slip and warm starts
-    const int first = contact;
-    for (int k = 0; k < manifold->getNumContacts(); ++k) {
-      btManifoldPoint& point = manifold->getContactPoint(k);
-      if (!(point.getDistance() <= manifold->getContactProcessingThreshold())) continue;
-      if (contact >= m_multiBodyNormalContactConstraints.size() ||
-          m_multiBodyNormalContactConstraints[contact].m_originalContactPoint != &point) {
-        bullets_layout = false;  // not Bullet's layout: leave its rows, start them from zero
-        break;
-      }
-      alongSlip(manifold, point, contact, m_multiBodyNormalContactConstraints[contact].m_frictionIndex, info);
-      ++contact;
+    if (!btMultiBodyLinkCollider::upcast(manifold->getBody0()) && !btMultiBodyLinkCollider::upcast(manifold->getBody1())) {
+      convertContact(manifold, info);  // a rigid-body pair: Bullet's rigid-body solver follows the slip and warm starts
+      continue;
     }
-    if (bullets_layout && contact == first + 1) lone_contact_[first] = true;
+    const int first = m_multiBodyNormalContactConstraints.size();
+    if (two_directions && slipFrictionApplies(manifold))
+      convertManifold(manifold, info);
+    else
+      convertMultiBodyContact(manifold, info);
+    const int made = m_multiBodyNormalContactConstraints.size() - first;
+    lone_contact_.resize(m_multiBodyNormalContactConstraints.size(), false);
+    // Warm started: a contact that is its manifold's one point, with its two friction rows.
+    if (made == 1 && two_directions && m_multiBodyFrictionContactConstraints.size() == 2 * static_cast<int>(lone_contact_.size()))
+      lone_contact_[first] = true;
   }
-  if (!bullets_layout) lone_contact_.assign(lone_contact_.size(), false);
+  // Joint motors, limits and attachments: Bullet's rows.
+  for (int i = 0; i < m_tmpNumMultiBodyConstraints; ++i) {
+    m_data.m_solverBodyPool = &m_tmpSolverBodyPool;
+    m_data.m_fixedBodyId = m_fixedBodyId;
+    m_tmpMultiBodyConstraints[i]->createConstraintRows(m_multiBodyNonContactConstraints, m_data, info);
+  }
+  for (int r = 0; r < m_multiBodyNonContactConstraints.size(); ++r) m_multiBodyNonContactConstraints[r].m_appliedImpulse = 0;
   if (warm_start_) warmStart();
 }
 
-// Relative velocity (A minus B) along a row's direction, as the solver computes it.
-btScalar ContactSolver::rowVelocity(const btMultiBodySolverConstraint& row) const {
-  btScalar v = 0;
-  if (row.m_multiBodyA) {
-    const btScalar* jacobian = &m_data.m_jacobians[row.m_jacAindex];
-    const btScalar* velocity = row.m_multiBodyA->getVelocityVector();
-    for (int i = 0; i < row.m_multiBodyA->getNumDofs() + 6; ++i) v += jacobian[i] * velocity[i];
-  } else if (row.m_solverBodyIdA >= 0) {
-    if (const btRigidBody* body = m_tmpSolverBodyPool[row.m_solverBodyIdA].m_originalBody)
-      v += row.m_contactNormal1.dot(body->getLinearVelocity()) +
-           row.m_relpos1CrossNormal.dot(body->getAngularVelocity());
+// Whether the manifold's contacts use only what convertManifold sets up: no rolling or spinning
+// friction and no anisotropic friction (none of our models has them; Bullet's conversion, with
+// its fixed directions, handles those).
+bool ContactSolver::slipFrictionApplies(const btPersistentManifold* manifold) {
+  const btCollisionObject* bodies[] = {manifold->getBody0(), manifold->getBody1()};
+  for (const btCollisionObject* body : bodies)
+    if (body->hasAnisotropicFriction(btCollisionObject::CF_ANISOTROPIC_FRICTION |
+                                     btCollisionObject::CF_ANISOTROPIC_ROLLING_FRICTION))
+      return false;
+  for (int k = 0; k < manifold->getNumContacts(); ++k) {
+    const btManifoldPoint& point = manifold->getContactPoint(k);
+    if (point.m_combinedRollingFriction > 0 || point.m_combinedSpinningFriction > 0) return false;
   }
-  if (row.m_multiBodyB) {
-    const btScalar* jacobian = &m_data.m_jacobians[row.m_jacBindex];
-    const btScalar* velocity = row.m_multiBodyB->getVelocityVector();
-    for (int i = 0; i < row.m_multiBodyB->getNumDofs() + 6; ++i) v += jacobian[i] * velocity[i];
-  } else if (row.m_solverBodyIdB >= 0) {
-    if (const btRigidBody* body = m_tmpSolverBodyPool[row.m_solverBodyIdB].m_originalBody)
-      v += row.m_contactNormal2.dot(body->getLinearVelocity()) +
-           row.m_relpos2CrossNormal.dot(body->getAngularVelocity());
-  }
-  return v;
+  return true;
 }
 
-void ContactSolver::alongSlip(btPersistentManifold* manifold, btManifoldPoint& point, int contact, int first_row,
-                              const btContactSolverInfo& info) {
-  const btMultiBodySolverConstraint& row1 = m_multiBodyFrictionContactConstraints[first_row];
-  const btMultiBodySolverConstraint& row2 = m_multiBodyFrictionContactConstraints[first_row + 1];
-  const btVector3 slip = rowVelocity(row1) * row1.m_contactNormal1 + rowVelocity(row2) * row2.m_contactNormal1;
-  const btScalar speed = slip.length();
-  if (!(speed > kSlipSpeed)) return;
-  point.m_lateralFrictionDir1 = slip / speed;
-  point.m_lateralFrictionDir2 = point.m_lateralFrictionDir1.cross(point.m_normalWorldOnB);
+// Bullet's conversion of a multibody manifold (a normal row per touching point and two friction
+// rows) with the friction directions chosen first.
+void ContactSolver::convertManifold(btPersistentManifold* manifold, const btContactSolverInfo& info) {
   auto* body0 = const_cast<btCollisionObject*>(manifold->getBody0());
   auto* body1 = const_cast<btCollisionObject*>(manifold->getBody1());
-  for (int r = 0; r < 2; ++r) {
-    // Appended by Bullet's set-up, then moved into the old row's place.
-    const btMultiBodySolverConstraint& row =
-        addMultiBodyFrictionConstraint(r == 0 ? point.m_lateralFrictionDir1 : point.m_lateralFrictionDir2, 0, manifold,
-                                       contact, point, body0, body1, info.m_sor, info);
-    m_multiBodyFrictionContactConstraints[first_row + r] = row;
-    m_multiBodyFrictionContactConstraints.pop_back();
+  const btMultiBodyLinkCollider* collider0 = btMultiBodyLinkCollider::upcast(body0);
+  const btMultiBodyLinkCollider* collider1 = btMultiBodyLinkCollider::upcast(body1);
+  btMultiBody* multibody0 = collider0 ? collider0->m_multiBody : nullptr;
+  btMultiBody* multibody1 = collider1 ? collider1->m_multiBody : nullptr;
+  const int solver_body0 = multibody0 ? -1 : getOrInitSolverBody(*body0, info.m_timeStep);
+  const int solver_body1 = multibody1 ? -1 : getOrInitSolverBody(*body1, info.m_timeStep);
+  for (int k = 0; k < manifold->getNumContacts(); ++k) {
+    btManifoldPoint& point = manifold->getContactPoint(k);
+    if (!(point.getDistance() <= manifold->getContactProcessingThreshold())) {
+      point.m_appliedImpulse = 0;  // as Bullet: a point out of touch has nothing to start from
+      point.m_prevRHS = 0;
+      continue;
+    }
+    const int contact = m_multiBodyNormalContactConstraints.size();
+    btMultiBodySolverConstraint& normal = m_multiBodyNormalContactConstraints.expandNonInitializing();
+    normal.m_orgConstraint = nullptr;
+    normal.m_orgDofIndex = -1;
+    normal.m_solverBodyIdA = solver_body0;
+    normal.m_solverBodyIdB = solver_body1;
+    normal.m_multiBodyA = multibody0;
+    if (multibody0) normal.m_linkA = collider0->m_link;
+    normal.m_multiBodyB = multibody1;
+    if (multibody1) normal.m_linkB = collider1->m_link;
+    normal.m_originalContactPoint = &point;
+    btScalar relaxation;
+    setupMultiBodyContactConstraint(normal, point.m_normalWorldOnB, point.m_appliedImpulse, point, info, relaxation, false);
+    normal.m_frictionIndex = m_multiBodyFrictionContactConstraints.size();
+
+    btPlaneSpace1(point.m_normalWorldOnB, point.m_lateralFrictionDir1, point.m_lateralFrictionDir2);
+    const btVector3 slip = velocityAlong(point.m_lateralFrictionDir1, point, body0, body1) * point.m_lateralFrictionDir1 +
+                           velocityAlong(point.m_lateralFrictionDir2, point, body0, body1) * point.m_lateralFrictionDir2;
+    const btScalar speed = slip.length();
+    if (speed > kSlipSpeed) {
+      point.m_lateralFrictionDir1 = slip / speed;
+      point.m_lateralFrictionDir2 = point.m_lateralFrictionDir1.cross(point.m_normalWorldOnB);
+    }
+    addMultiBodyFrictionConstraint(point.m_lateralFrictionDir1, point.m_appliedImpulseLateral1, manifold, contact, point,
+                                   body0, body1, relaxation, info);
+    addMultiBodyFrictionConstraint(point.m_lateralFrictionDir2, point.m_appliedImpulseLateral2, manifold, contact, point,
+                                   body0, body1, relaxation, info);
   }
+}
+
+// The velocity of body 0 relative to body 1 at the contact along `direction`, as a friction row
+// along it measures it (its Jacobians times the bodies' velocities).
+btScalar ContactSolver::velocityAlong(const btVector3& direction, const btManifoldPoint& point,
+                                      const btCollisionObject* body0, const btCollisionObject* body1) {
+  const auto along = [&](const btCollisionObject* body, const btVector3& where) -> btScalar {
+    if (const btMultiBodyLinkCollider* collider = btMultiBodyLinkCollider::upcast(body)) {
+      const btMultiBody* multibody = collider->m_multiBody;
+      const int dofs = multibody->getNumDofs() + 6;
+      jacobian_.resize(dofs);
+      multibody->fillContactJacobianMultiDof(collider->m_link, where, direction, &jacobian_[0], m_data.scratch_r,
+                                             m_data.scratch_v, m_data.scratch_m);
+      const btScalar* velocity = multibody->getVelocityVector();
+      btScalar v = 0;
+      for (int i = 0; i < dofs; ++i) v += jacobian_[i] * velocity[i];
+      return v;
+    }
+    if (const btRigidBody* rigid = btRigidBody::upcast(body))
+      return rigid->getVelocityInLocalPoint(where - rigid->getCenterOfMassPosition()).dot(direction);
+    return 0;  // a static object
+  };
+  return along(body0, point.getPositionWorldOnA()) - along(body1, point.getPositionWorldOnB());
 }
 
 // Warm starting.

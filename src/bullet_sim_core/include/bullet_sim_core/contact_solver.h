@@ -40,14 +40,16 @@ class ContactSolver : public btMultiBodyConstraintSolver {
                                          const btContactSolverInfo& info) override;
 
  private:
-  btScalar rowVelocity(const btMultiBodySolverConstraint& row) const;
-  void alongSlip(btPersistentManifold* manifold, btManifoldPoint& point, int contact, int first_row,
-                 const btContactSolverInfo& info);
+  static bool slipFrictionApplies(const btPersistentManifold* manifold);
+  void convertManifold(btPersistentManifold* manifold, const btContactSolverInfo& info);
+  btScalar velocityAlong(const btVector3& direction, const btManifoldPoint& point, const btCollisionObject* body0,
+                         const btCollisionObject* body1);
   void warmStart();
   void startRowAt(btMultiBodySolverConstraint& row, btScalar impulse);
 
   bool warm_start_ = true;
   std::vector<bool> lone_contact_;  // per normal row: its manifold's only touching point
+  btAlignedObjectArray<btScalar> jacobian_;  // scratch for velocityAlong
   long solves_ = 0, sweeps_ = 0;
 };
 
