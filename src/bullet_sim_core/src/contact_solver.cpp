@@ -205,22 +205,21 @@ void ContactSolver::warmStart() {
 void ContactSolver::startRowAt(btMultiBodySolverConstraint& row, btScalar impulse) {
   if (impulse == 0) return;
   row.m_appliedImpulse = impulse;
-  if (row.m_multiBodyA) {
-    btScalar* unit = &m_data.m_deltaVelocitiesUnitImpulse[row.m_jacAindex];
-    applyDeltaVee(unit, impulse, row.m_deltaVelAindex, row.m_multiBodyA->getNumDofs() + 6);
-    row.m_multiBodyA->applyDeltaVeeMultiDof2(unit, impulse);
-  } else if (row.m_solverBodyIdA >= 0) {
-    btSolverBody& body = m_tmpSolverBodyPool[row.m_solverBodyIdA];
-    body.internalApplyImpulse(row.m_contactNormal1 * body.internalGetInvMass(), row.m_angularComponentA, impulse);
-  }
-  if (row.m_multiBodyB) {
-    btScalar* unit = &m_data.m_deltaVelocitiesUnitImpulse[row.m_jacBindex];
-    applyDeltaVee(unit, impulse, row.m_deltaVelBindex, row.m_multiBodyB->getNumDofs() + 6);
-    row.m_multiBodyB->applyDeltaVeeMultiDof2(unit, impulse);
-  } else if (row.m_solverBodyIdB >= 0) {
-    btSolverBody& body = m_tmpSolverBodyPool[row.m_solverBodyIdB];
-    body.internalApplyImpulse(row.m_contactNormal2 * body.internalGetInvMass(), row.m_angularComponentB, impulse);
-  }
+  const auto apply = [&](btMultiBody* multibody, int jacobian, int velocities, int solver_body, const btVector3& normal,
+                         const btVector3& angular) {
+    if (multibody) {
+      btScalar* unit = &m_data.m_deltaVelocitiesUnitImpulse[jacobian];
+      applyDeltaVee(unit, impulse, velocities, multibody->getNumDofs() + 6);
+      multibody->applyDeltaVeeMultiDof2(unit, impulse);
+    } else if (solver_body >= 0) {
+      btSolverBody& body = m_tmpSolverBodyPool[solver_body];
+      body.internalApplyImpulse(normal * body.internalGetInvMass(), angular, impulse);
+    }
+  };
+  apply(row.m_multiBodyA, row.m_jacAindex, row.m_deltaVelAindex, row.m_solverBodyIdA, row.m_contactNormal1,
+        row.m_angularComponentA);
+  apply(row.m_multiBodyB, row.m_jacBindex, row.m_deltaVelBindex, row.m_solverBodyIdB, row.m_contactNormal2,
+        row.m_angularComponentB);
 }
 
 // The early stop needs every row to start near its answer: with a contact that started from zero
