@@ -49,9 +49,8 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int count,
       convertMultiBodyContact(manifold, info);
     const int made = m_multiBodyNormalContactConstraints.size() - first;
     lone_contact_.resize(m_multiBodyNormalContactConstraints.size(), false);
-    // Warm started: a contact that is its manifold's one point, with its two friction rows.
-    if (made == 1 && two_directions && m_multiBodyFrictionContactConstraints.size() == 2 * static_cast<int>(lone_contact_.size()))
-      lone_contact_[first] = true;
+    // Warm started: a contact that is its manifold's one point (both conversions give it two friction rows).
+    if (made == 1 && two_directions) lone_contact_[first] = true;
   }
   // Joint motors, limits and attachments: Bullet's rows.
   for (int i = 0; i < m_tmpNumMultiBodyConstraints; ++i) {
