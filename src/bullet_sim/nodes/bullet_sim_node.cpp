@@ -17,6 +17,7 @@
 #include "bullet_sim_core/description_error.h"
 #include "bullet_sim_core/sdf_parser.h"
 #include "bullet_sim_plugins/plugin_registry.h"
+#include "publish_thread/no_delay.h"
 
 namespace {
 
@@ -79,6 +80,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   ros::NodeHandle gazebo("/gazebo");
+  publish_thread::sendWithoutDelay();  // every subscriber gets each message at once, even faster than real time
   bullet_sim::SimulatorOptions options;
   options.paused = arguments.paused;
   options.timing = arguments.timing;

@@ -13,11 +13,16 @@
 
 namespace bullet_sim {
 namespace {
-// With pub_clock_frequency 0 (every step), the wall-clock floor between /clock messages: when
-// running much faster than real time, a message per step would only load every sim-time subscriber.
-const ros::WallDuration kMinClockWallPeriod(0.0005);
+// The wall-clock floor between /clock messages, whatever pub_clock_frequency asks: every node that
+// uses sim time wakes for each one, so at 20x gazebo_ros' 100 Hz of sim time (2000 a second) would
+// cost each of them more than it gains; 1 kHz is what real time at 1 ms steps gives them.
+const ros::WallDuration kMinClockWallPeriod(0.001);
 // While paused, /clock repeats the frozen time so that late starters learn it.
 const ros::WallDuration kPausedClockPeriod(0.1);
+// When running ahead of the target speed, the loop sleeps only once it is this far ahead: at 10x and
+// beyond, a sleep per step (tens of microseconds each) would cost more in thread switches than the
+// step itself. At real time each step still ends in a sleep.
+const double kMinPaceSleep = 0.0005;
 }  // namespace
 
 Simulator::Simulator(const WorldDescription& world, const ResourceResolver& resolver, const SimulatorOptions& options)
@@ -117,12 +122,10 @@ void Simulator::runSteps(int n) {
 void Simulator::publishClock(bool force) {
   const ros::Time t = now();
   if (!force) {
-    if (options_.pub_clock_frequency > 0) {
-      // gazebo_ros: /clock at pub_clock_frequency Hz of sim time, whatever the speed.
-      if ((t - last_clock_).toSec() < 1.0 / options_.pub_clock_frequency) return;
-    } else if (ros::WallTime::now() - last_clock_wall_ < kMinClockWallPeriod) {
-      return;  // "every step" (upstream's default), but no faster than a subscriber can read
-    }
+    // gazebo_ros: /clock at pub_clock_frequency Hz of sim time whatever the speed (0: every step).
+    if (options_.pub_clock_frequency > 0 && (t - last_clock_).toSec() < 1.0 / options_.pub_clock_frequency) return;
+    if (ros::WallTime::now() - last_clock_wall_ < kMinClockWallPeriod) return;
+
   }
   rosgraph_msgs::Clock msg;
   msg.clock = t;
@@ -162,7 +165,7 @@ void Simulator::run() {
       continue;
     }
     const double ahead = (physics_.time() - pace_sim_start_) / target - (wall - pace_wall_start_).toSec();
-    if (ahead > 0) {
+    if (ahead > kMinPaceSleep) {
       queue.callAvailable(ros::WallDuration(ahead));  // sleeps, but answers requests meanwhile
       const double still_ahead =
           (physics_.time() - pace_sim_start_) / target - (ros::WallTime::now() - pace_wall_start_).toSec();

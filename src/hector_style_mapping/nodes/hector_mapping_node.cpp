@@ -5,11 +5,14 @@
 
 #include <ros/ros.h>
 
+#include "publish_thread/no_delay.h"
+
 #include "hector_style_mapping/ros/mapping_node.h"
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "hector_mapping");
   ros::NodeHandle nh;
+  publish_thread::sendWithoutDelay();  // subscribers get each message at once, even faster than real time
   ros::NodeHandle private_nh("~");
   std::unique_ptr<hector_style_mapping::MappingNode> node;
   try {

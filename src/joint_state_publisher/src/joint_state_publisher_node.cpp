@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "joint_state_publisher/joint_list.h"
+#include "publish_thread/no_delay.h"
 
 namespace joint_state_publisher {
 namespace {
@@ -114,6 +115,7 @@ int main(int argc, char** argv) {
   using namespace joint_state_publisher;
   ros::init(argc, argv, "joint_state_publisher");
   ros::NodeHandle nh;
+  publish_thread::sendWithoutDelay();  // subscribers get each message at once, even faster than real time
   std::string description;
   if (!getParam("robot_description", description)) {
     ROS_FATAL("The robot_description parameter is required and not set.");

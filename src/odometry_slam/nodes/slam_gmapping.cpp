@@ -5,11 +5,14 @@
 
 #include <ros/ros.h>
 
+#include "publish_thread/no_delay.h"
+
 #include "odometry_slam/ros/slam_gmapping_node.h"
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "slam_gmapping");
   ros::NodeHandle nh;
+  publish_thread::sendWithoutDelay();  // subscribers get each message at once, even faster than real time
   ros::NodeHandle private_nh("~");
   std::unique_ptr<odometry_slam::SlamGmappingNode> node;
   try {

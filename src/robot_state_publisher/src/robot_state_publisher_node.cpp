@@ -18,6 +18,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <urdf/model.h>
 
+#include "publish_thread/no_delay.h"
 #include "robot_state_publisher/kinematic_tree.h"
 
 namespace robot_state_publisher {
@@ -136,6 +137,7 @@ int main(int argc, char** argv) {
   try {
     const robot_state_publisher::KinematicTree tree(model);
     robot_state_publisher::StatePublisher publisher(tree);
+    publish_thread::sendWithoutDelay();  // subscribers get each message at once, even faster than real time
     ros::spin();
   } catch (const std::invalid_argument& e) {
     ROS_ERROR("%s", e.what());
