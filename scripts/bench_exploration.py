@@ -6,10 +6,11 @@ random starts, one fresh bring-up per run on a private roscore.
   bench_exploration.py [--robot m_robot|pioneer] [--explorer find_frontier|explore] [--starts N]
                        [--seed S] [--rtf F] [--mapper gmapping|hector]
 
-  m_robot  find_frontier explore_maze.launch in the Capstone maze (hector_mapping, laser 6 m), at
-           20x real time (what the whole stack keeps up with on 2 cores; --rtf 0: as fast as it goes)
-  pioneer  pioneer_2dnav explore.launch in its 8 x 8 m maze (laser 30 m), at 10x real time, with
-           slam_gmapping (explore.launch's default), or with --mapper hector hector_mapping
+  m_robot  find_frontier explore_maze.launch in the Capstone maze (hector_mapping, laser 6 m), paced
+           at 30x real time (2 cores run its whole stack at 25-27x; --rtf 0: as fast as it goes)
+  pioneer  pioneer_2dnav explore.launch in its 8 x 8 m maze (laser 30 m), at 20x real time (what
+           its stack keeps up with on 2 cores), with slam_gmapping (explore.launch's default), or
+           with --mapper hector hector_mapping
 
 Starts are drawn from the cells the robot's centre can reach, at least 0.15 m more than its
 inscribed radius from every wall, with a random heading. For each run: completion (the node's
@@ -47,11 +48,11 @@ from explore_demo import Watch  # noqa: E402
 ROBOTS = {
     'm_robot': dict(launch=['find_frontier', 'explore_maze.launch'], model='m_robot',
                     walls=os.path.join(ROOT, 'src', 'm_robot_sim', 'config', 'capstone_map_walls.yaml'),
-                    inscribed=0.12, outline=(0.26, 0.22, 0.0), laser_range=6.0, rtf=20.0, timeout=600.0,
+                    inscribed=0.12, outline=(0.26, 0.22, 0.0), laser_range=6.0, rtf=30.0, timeout=600.0,
                     mapper='hector'),
     'pioneer': dict(launch=['pioneer_2dnav', 'explore.launch'], model='pioneer',
                     walls=os.path.join(ROOT, 'src', 'pioneer_sim', 'config', 'pioneer_maze_walls.yaml'),
-                    inscribed=0.2, outline=(0.44, 0.38, -0.045), laser_range=30.0, rtf=10.0, timeout=1500.0,
+                    inscribed=0.2, outline=(0.44, 0.38, -0.045), laser_range=30.0, rtf=20.0, timeout=1500.0,
                     mapper='gmapping'),
 }
 DEFAULT_START = {'m_robot': (0.0, 0.0), 'pioneer': (-3.2, -3.2)}

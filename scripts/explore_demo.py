@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The main demo: m_robot explores the Capstone maze on its own (find_frontier explore_maze.launch:
 the simulator, hector_mapping, move_base and find_frontier, or explore_lite's explore), headless
-at 20 times real time (as fast as the whole stack keeps up on 2 cores), on a ROS master of its own.
+at 20 times real time (2 cores keep up with its whole stack to 25-27x), on a ROS master of its own.
 
   explore_demo.py [--explorer find_frontier|explore] [--gui | gui:=true] [--rtf F] [--start X Y YAW] [--out DIR]
 
@@ -213,7 +213,7 @@ def main():
     parser.add_argument('--explorer', choices=['find_frontier', 'explore'], default='find_frontier')
     parser.add_argument('--gui', action='store_true', help='open rviz (needs a display)')
     parser.add_argument('--rtf', type=float, default=20.0,
-                        help='target real-time factor (default 20, what the whole stack keeps up with on 2 cores; '
+                        help='target real-time factor (default 20; 2 cores keep up with the whole stack to 25-27x; '
                              '0: as fast as the simulator goes)')
     parser.add_argument('--start', type=float, nargs=3, default=(0.0, 0.0, 0.0), metavar=('X', 'Y', 'YAW'),
                         help='m_robot\'s start in the world (default 0 0 0, the lecture\'s)')
