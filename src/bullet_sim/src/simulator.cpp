@@ -15,8 +15,9 @@ namespace bullet_sim {
 namespace {
 // The wall-clock floor between /clock messages, whatever pub_clock_frequency asks: every node that
 // uses sim time wakes for each one, so at 20x gazebo_ros' 100 Hz of sim time (2000 a second) would
-// cost each of them more than it gains; 1 kHz is what real time at 1 ms steps gives them.
-const ros::WallDuration kMinClockWallPeriod(0.001);
+// cost each of them more than it gains. About 1 kHz is what real time at 1 ms steps gives them; just
+// under 1 ms, so that at real time every step still gets its message.
+const ros::WallDuration kMinClockWallPeriod(0.0009);
 // While paused, /clock repeats the frozen time so that late starters learn it.
 const ros::WallDuration kPausedClockPeriod(0.1);
 // When running ahead of the target speed, the loop sleeps only once it is this far ahead: at 10x and
@@ -125,7 +126,6 @@ void Simulator::publishClock(bool force) {
     // gazebo_ros: /clock at pub_clock_frequency Hz of sim time whatever the speed (0: every step).
     if (options_.pub_clock_frequency > 0 && (t - last_clock_).toSec() < 1.0 / options_.pub_clock_frequency) return;
     if (ros::WallTime::now() - last_clock_wall_ < kMinClockWallPeriod) return;
-
   }
   rosgraph_msgs::Clock msg;
   msg.clock = t;
