@@ -45,7 +45,6 @@ class Watch:
                  laser_range=LASER_RANGE):
         import numpy as np
         import rospy
-        from gazebo_msgs.msg import ModelStates
         from move_base_msgs.msg import MoveBaseActionResult
         from nav_msgs.msg import OccupancyGrid
         from std_msgs.msg import String
@@ -65,7 +64,6 @@ class Watch:
         rospy.Subscriber('/map', OccupancyGrid, self.on_map, queue_size=1)
         # Raw, decoded only when a sample is due (every 0.1 s of sim time): model_states comes up to
         # a thousand times a wall second, and decoding each in Python took 15 % of a core.
-        self.model_states = ModelStates
         rospy.Subscriber('/gazebo/model_states', rospy.AnyMsg, self.on_raw_states, queue_size=1)
         rospy.Subscriber(status_topic, String, self.on_status, queue_size=10)
         rospy.Subscriber('/move_base/result', MoveBaseActionResult, self.on_result, queue_size=10)
@@ -81,11 +79,12 @@ class Watch:
 
     def on_raw_states(self, raw):
         import rospy
+        from gazebo_msgs.msg import ModelStates
         now = rospy.get_time()
         with self.lock:
             if self.path and now - self.path[-1][0] < 0.1:
                 return
-        msg = self.model_states()
+        msg = ModelStates()
         msg.deserialize(raw._buff)
         if self.model not in msg.name:
             return

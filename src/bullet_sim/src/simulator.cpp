@@ -122,16 +122,17 @@ void Simulator::runSteps(int n) {
 
 void Simulator::publishClock(bool force) {
   const ros::Time t = now();
+  const ros::WallTime wall = ros::WallTime::now();
   if (!force) {
     // gazebo_ros: /clock at pub_clock_frequency Hz of sim time whatever the speed (0: every step).
     if (options_.pub_clock_frequency > 0 && (t - last_clock_).toSec() < 1.0 / options_.pub_clock_frequency) return;
-    if (ros::WallTime::now() - last_clock_wall_ < kMinClockWallPeriod) return;
+    if (wall - last_clock_wall_ < kMinClockWallPeriod) return;
   }
   rosgraph_msgs::Clock msg;
   msg.clock = t;
   publish_thread::publish(clock_publisher_, msg);
   last_clock_ = t;
-  last_clock_wall_ = ros::WallTime::now();
+  last_clock_wall_ = wall;
 }
 
 void Simulator::run() {
