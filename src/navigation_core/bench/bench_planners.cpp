@@ -6,9 +6,11 @@
 //    0.05 m cells: a maze-like map (walls of random length on a 1 m lattice, inflated as
 //    costmap_2d would for a 0.24 x 0.18 m robot), PLANS seeded random start/goal pairs in free
 //    space at least half the map apart; mean and worst milliseconds per plan, and how many found one.
-// 2. The local planner's cycle (LocalPlanner::computeVelocity) on a 4 x 4 m rolling window with
-//    base_local_planner's default sampling (3 x 20 velocities, 1 s at 0.025 m), following a path
-//    across it: mean and worst microseconds.
+// 2. The local planner's cycle (LocalPlanner::computeVelocity) on a 4 x 4 m rolling window: in the
+//    maze, following a path across it from its start, with base_local_planner's default sampling
+//    (3 x 20 velocities, 1 s at 0.025 m); and the Pioneer as pioneer_2dnav sets it up (its padded
+//    footprint, 6 x 20 velocities over 1.5 s in metres, inflation 0.6 m at scaling 3) in a 1.2 m
+//    corridor that turns left, from 40 poses along its centre line: mean and worst microseconds.
 // 3. Inflating the whole 512 x 512 map once: milliseconds.
 // 4. A local costmap's update per laser scan (LayeredCostmap: the 4 x 4 m rolling window moved,
 //    one 720-beam scan cleared and marked, footprint cleared, inflated), the robot driving through
@@ -116,6 +118,46 @@ int main(int argc, char** argv) {
       worst = std::max(worst, us);
     }
     std::printf("local planner cycle 80x80 window: %.0f us mean, %.0f us worst\n", total / cycles, worst);
+  }
+  {
+    const Footprint pioneer_footprint = {{-0.29, -0.22}, {-0.29, 0.22}, {0.20, 0.22}, {0.20, -0.22}};
+    Costmap window(80, 80, kRes, 0, 0);
+    const auto wall = [&](double x0, double y0, double x1, double y1) {
+      for (double t = 0; t <= 1.0; t += 0.005) {
+        unsigned mx, my;
+        if (window.worldToMap(x0 + t * (x1 - x0), y0 + t * (y1 - y0), mx, my)) window.setCost(mx, my, kLethalObstacle);
+      }
+    };
+    wall(0.0, 1.4, 3.2, 1.4), wall(3.2, 1.4, 3.2, 4.0), wall(0.0, 2.6, 2.0, 2.6), wall(2.0, 2.6, 2.0, 4.0);
+    InflationOptions inflation;
+    inflation.inflation_radius = 0.6, inflation.cost_scaling_factor = 3.0;
+    Inflation(inflation, footprintRadii(pioneer_footprint).inscribed, kRes).apply(window);
+    std::vector<Point2> plan;
+    for (int k = 0; k <= 48; ++k) plan.push_back({0.2 + 0.05 * k, 2.0});
+    for (int k = 1; k <= 36; ++k) plan.push_back({2.6, 2.0 + 0.05 * k});
+    LocalPlannerOptions o;
+    o.max_vel_x = 0.5, o.acc_lim_x = 1.0, o.acc_lim_theta = 2.0, o.sim_time = 1.5, o.vx_samples = 6;
+    o.meter_scoring = true, o.min_in_place_vel_theta = 0.5;
+    LocalPlanner planner(o);
+    double total = 0, worst = 0;
+    const int cycles = 200;
+    for (int k = 0; k < cycles; ++k) {
+      const std::size_t at = static_cast<std::size_t>(k % 40) * 2;  // on the path, heading along it, at half speed
+      const Point2& p = plan[at];
+      Trajectory best;
+      std::string why;
+      Velocity2 v;
+      v.x = 0.25;
+      const std::vector<Point2> ahead(plan.begin() + static_cast<std::ptrdiff_t>(at), plan.end());
+      const auto start = std::chrono::steady_clock::now();
+      planner.computeVelocity(window, pioneer_footprint, {p.x, p.y, std::atan2(plan[at + 1].y - p.y, plan[at + 1].x - p.x)},
+                              v, ahead, best, &why);
+      const double us = 1000 * millisecondsSince(start);
+      total += us;
+      worst = std::max(worst, us);
+    }
+    std::printf("local planner cycle 80x80 window, the Pioneer in a corridor: %.0f us mean, %.0f us worst\n",
+                total / cycles, worst);
   }
   {
     std::mt19937 rng(seed);

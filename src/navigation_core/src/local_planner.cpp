@@ -65,42 +65,49 @@ void LocalPlanner::distanceGrid(const Costmap& costmap, const std::vector<unsign
   // 4-connected count is the Manhattan one and makes a robot heading diagonally to its goal look as
   // well placed as one heading straight at it. Integer weights let a bucket queue (Dial's
   // algorithm) replace a heap: linear in the window.
-  constexpr unsigned kStraight = 5, kDiagonal = 7, kBuckets = kDiagonal + 1;
+  constexpr unsigned kStraight = 5, kDiagonal = 7;
   constexpr unsigned kNone = std::numeric_limits<unsigned>::max();
   const unsigned nx = costmap.sizeX(), ny = costmap.sizeY();
   const std::vector<std::uint8_t>& costs = costmap.costs();
-  std::vector<unsigned> distance(costs.size(), kNone);
-  std::vector<unsigned> buckets[kBuckets];
+  std::vector<unsigned>& distance = scratch_distance_;  // kept between calls: no allocation per cycle
+  distance.assign(costs.size(), kNone);
+  for (std::vector<unsigned>& bucket : scratch_buckets_) bucket.clear();
   for (const unsigned s : seeds) {
     if (distance[s] == 0) continue;
     distance[s] = 0;
-    buckets[0].push_back(s);
+    scratch_buckets_[0].push_back(s);
   }
-  std::size_t waiting = seeds.empty() ? 0 : buckets[0].size();
+  const int row = static_cast<int>(nx);
+  const int offsets[8] = {-1, 1, -row, row, -row - 1, -row + 1, row - 1, row + 1};
+  const unsigned steps[8] = {kStraight, kStraight, kStraight, kStraight, kDiagonal, kDiagonal, kDiagonal, kDiagonal};
+  const auto relax = [&](unsigned m, unsigned next) {
+    if (blocksTheGrid(costs[m]) || next >= distance[m]) return;
+    distance[m] = next;
+    scratch_buckets_[next % kDistanceBuckets].push_back(m);
+  };
+  std::size_t waiting = scratch_buckets_[0].size();
   for (unsigned d = 0; waiting > 0; ++d) {
-    std::vector<unsigned>& bucket = buckets[d % kBuckets];
+    std::vector<unsigned>& bucket = scratch_buckets_[d % kDistanceBuckets];
     for (std::size_t k = 0; k < bucket.size(); ++k) {
       const unsigned n = bucket[k];
       if (distance[n] != d) continue;  // reached more cheaply since
       const unsigned x = n % nx, y = n / nx;
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
-          if ((dx == 0 && dy == 0) || (dx < 0 && x == 0) || (dy < 0 && y == 0) || (dx > 0 && x + 1 == nx) ||
-              (dy > 0 && y + 1 == ny))
-            continue;
-          const unsigned m = static_cast<unsigned>(static_cast<int>(n) + dy * static_cast<int>(nx) + dx);
-          if (blocksTheGrid(costs[m])) continue;
-          const unsigned next = d + (dx != 0 && dy != 0 ? kDiagonal : kStraight);
-          if (next < distance[m]) {
-            distance[m] = next;
-            buckets[next % kBuckets].push_back(m);
-            ++waiting;
+      if (x > 0 && y > 0 && x + 1 < nx && y + 1 < ny) {  // inside the border: all eight neighbours
+        for (int i = 0; i < 8; ++i) relax(static_cast<unsigned>(static_cast<int>(n) + offsets[i]), d + steps[i]);
+      } else {
+        for (int dy = -1; dy <= 1; ++dy) {
+          for (int dx = -1; dx <= 1; ++dx) {
+            if ((dx == 0 && dy == 0) || (dx < 0 && x == 0) || (dy < 0 && y == 0) || (dx > 0 && x + 1 == nx) ||
+                (dy > 0 && y + 1 == ny))
+              continue;
+            relax(static_cast<unsigned>(static_cast<int>(n) + dy * row + dx), d + (dx != 0 && dy != 0 ? kDiagonal : kStraight));
           }
         }
       }
     }
-    waiting -= bucket.size();
+    waiting = 0;
     bucket.clear();
+    for (const std::vector<unsigned>& b : scratch_buckets_) waiting += b.size();
   }
   out.resize(costs.size());
   for (std::size_t i = 0; i < costs.size(); ++i)
@@ -131,28 +138,84 @@ double LocalPlanner::footprintCost(const Costmap& costmap, const Footprint& foot
   return clear ? highest : -1.0;
 }
 
-Trajectory LocalPlanner::simulate(const Costmap& costmap, const Footprint& footprint, const Pose2& pose,
-                                  const Velocity2& command) const {
-  Trajectory t;
-  t.velocity = command;
+LocalPlanner::Rollout LocalPlanner::rollout(const Pose2& pose, const Velocity2& command) const {
+  Rollout r;
+  r.command = command;
   const double distance = std::abs(command.x) * options_.sim_time;
   const double angle = std::abs(command.theta) * options_.sim_time;
   const int steps = std::max(1, static_cast<int>(std::ceil(std::max(distance / options_.sim_granularity,
                                                                     angle / options_.angular_sim_granularity))));
   const double dt = options_.sim_time / steps;
-  const bool scored = path_distance_.size() == costmap.costs().size();
+  r.poses.reserve(steps);
+  r.cos_theta.reserve(steps);
+  r.sin_theta.reserve(steps);
   Pose2 p = pose;
-  double highest = 0.0;
   double c = std::cos(p.theta), s = std::sin(p.theta);
   for (int k = 0; k < steps; ++k) {
     p.x += command.x * c * dt;
     p.y += command.x * s * dt;
     p.theta += command.theta * dt;
     if (command.theta != 0.0) c = std::cos(p.theta), s = std::sin(p.theta);
-    const double cost = footprintCost(costmap, footprint, p, c, s);
+    r.poses.push_back(p);
+    r.cos_theta.push_back(c);
+    r.sin_theta.push_back(s);
+  }
+  return r;
+}
+
+bool LocalPlanner::scored(const Costmap& costmap) const { return path_distance_.size() == costmap.costs().size(); }
+
+double LocalPlanner::score(const Costmap& costmap, unsigned end_cell, double highest) const {
+  const double scale = options_.meter_scoring ? costmap.resolution() : 1.0;
+  return options_.path_distance_bias * scale * path_distance_[end_cell] +
+         options_.goal_distance_bias * scale * goal_distance_[end_cell] + options_.occdist_scale * highest;
+}
+
+double LocalPlanner::lowestScore(const Costmap& costmap, const Footprint& footprint, const Rollout& r) const {
+  constexpr double kNever = std::numeric_limits<double>::infinity();
+  unsigned end_x, end_y;
+  if (!scored(costmap) || r.poses.empty() || !costmap.worldToMap(r.poses.back().x, r.poses.back().y, end_x, end_y))
+    return kNever;
+  // The cells under each pose's centre and corners: a few of the outline's, checked as check()
+  // does. One that fails there fails there too (or earlier); the highest of their costs is at
+  // most the footprints' highest.
+  const std::vector<std::uint8_t>& costs = costmap.costs();
+  const auto fails = [](std::uint8_t cost) { return cost == kLethalObstacle || cost == kNoInformation; };
+  std::uint8_t highest = 0;
+  for (std::size_t k = 0; k < r.poses.size(); ++k) {
+    const Pose2& p = r.poses[k];
+    unsigned cx, cy;
+    if (!costmap.worldToMap(p.x, p.y, cx, cy)) return kNever;
+    const unsigned centre = costmap.index(cx, cy);
+    if (fails(costs[centre])) return kNever;
+    if (!blocksTheGrid(costs[centre]) && (path_distance_[centre] >= kUnreachable || goal_distance_[centre] >= kUnreachable))
+      return kNever;
+    highest = std::max(highest, costs[centre]);
+    for (const Point2& v : footprint) {
+      int vx, vy;
+      if (!outlineVertexCell(costmap, p, r.cos_theta[k], r.sin_theta[k], v, vx, vy)) return kNever;
+      const std::uint8_t cost = costs[costmap.index(static_cast<unsigned>(vx), static_cast<unsigned>(vy))];
+      if (fails(cost)) return kNever;
+      highest = std::max(highest, cost);
+    }
+  }
+  // With occdist_scale >= 0 the rest of the outline can only add to the score (and adding a
+  // non-negative number never rounds below the sum without it).
+  if (options_.occdist_scale < 0) return -kNever;
+  return score(costmap, costmap.index(end_x, end_y), highest);
+}
+
+Trajectory LocalPlanner::check(const Costmap& costmap, const Footprint& footprint, const Rollout& r) const {
+  Trajectory t;
+  t.velocity = r.command;
+  const bool with_scores = scored(costmap);
+  double highest = 0.0;
+  for (std::size_t k = 0; k < r.poses.size(); ++k) {
+    const Pose2& p = r.poses[k];
+    const double cost = footprintCost(costmap, footprint, p, r.cos_theta[k], r.sin_theta[k]);
     if (cost < 0) return t;  // cost stays -1: unsafe
     unsigned cx, cy;
-    if (scored && costmap.worldToMap(p.x, p.y, cx, cy)) {
+    if (with_scores && costmap.worldToMap(p.x, p.y, cx, cy)) {
       // As base_local_planner: a free cell with no way round the obstacles to the path or the
       // goal makes the trajectory invalid (inscribed cells are let through: see footprintCost).
       const unsigned i = costmap.index(cx, cy);
@@ -165,12 +228,14 @@ Trajectory LocalPlanner::simulate(const Costmap& costmap, const Footprint& footp
     t.poses.push_back(p);
   }
   unsigned mx, my;
-  if (!costmap.worldToMap(p.x, p.y, mx, my) || !scored) return t;
-  const unsigned end = costmap.index(mx, my);
-  const double scale = options_.meter_scoring ? costmap.resolution() : 1.0;
-  t.cost = options_.path_distance_bias * scale * path_distance_[end] +
-           options_.goal_distance_bias * scale * goal_distance_[end] + options_.occdist_scale * highest;
+  if (!with_scores || r.poses.empty() || !costmap.worldToMap(r.poses.back().x, r.poses.back().y, mx, my)) return t;
+  t.cost = score(costmap, costmap.index(mx, my), highest);
   return t;
+}
+
+Trajectory LocalPlanner::simulate(const Costmap& costmap, const Footprint& footprint, const Pose2& pose,
+                                  const Velocity2& command) const {
+  return check(costmap, footprint, rollout(pose, command));
 }
 
 bool LocalPlanner::computeVelocity(const Costmap& costmap, const Footprint& footprint, const Pose2& pose,
@@ -222,19 +287,45 @@ bool LocalPlanner::computeVelocity(const Costmap& costmap, const Footprint& foot
   if (min_vx > max_vx) min_vx = max_vx;
   if (min_vth > max_vth) min_vth = max_vth;
 
-  best = Trajectory();
-  const auto consider = [&](double vx, double vth) {
-    if (std::abs(vx) < options_.min_vel_trans && std::abs(vth) < options_.min_in_place_vel_theta) return;
-    Velocity2 command;
-    command.x = vx;
-    command.theta = vth;
-    Trajectory t = simulate(costmap, footprint, pose, command);
-    if (t.cost >= 0 && (best.cost < 0 || t.cost < best.cost)) best = std::move(t);
+  // Every sampled command is rolled out first (no footprints: cheap), and where it ends bounds its
+  // score from below (the footprints' costs can only add to it). The footprints, nearly all of the
+  // work, are then checked in order of that bound, and no more once a bound is above the best
+  // score found: the command checking them all would choose (the lowest score, the first sampled
+  // among equals), at a fraction of the cost.
+  struct Candidate {
+    Rollout rollout;
+    double lowest;
+    int order;  // sampling order, which breaks ties as checking them in turn would
   };
+  std::vector<Candidate> candidates;
   const int nvx = options_.vx_samples, nvth = options_.vtheta_samples;
+  candidates.reserve(static_cast<std::size_t>(nvx) * nvth);
   for (int i = 0; i < nvx; ++i) {
     const double vx = nvx == 1 ? max_vx : min_vx + i * (max_vx - min_vx) / (nvx - 1);
-    for (int j = 0; j < nvth; ++j) consider(vx, nvth == 1 ? 0.0 : min_vth + j * (max_vth - min_vth) / (nvth - 1));
+    for (int j = 0; j < nvth; ++j) {
+      const double vth = nvth == 1 ? 0.0 : min_vth + j * (max_vth - min_vth) / (nvth - 1);
+      if (!isAMove(vx, vth)) continue;
+      Velocity2 command;
+      command.x = vx;
+      command.theta = vth;
+      Rollout r = rollout(pose, command);
+      const double lowest = lowestScore(costmap, footprint, r);
+      if (lowest < std::numeric_limits<double>::infinity())
+        candidates.push_back({std::move(r), lowest, static_cast<int>(candidates.size())});
+    }
+  }
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    return a.lowest < b.lowest || (a.lowest == b.lowest && a.order < b.order);
+  });
+  best = Trajectory();
+  int best_order = -1;
+  for (const Candidate& c : candidates) {
+    if (best.cost >= 0 && (c.lowest > best.cost || (c.lowest == best.cost && c.order > best_order))) break;
+    Trajectory t = check(costmap, footprint, c.rollout);
+    if (t.cost >= 0 && (best.cost < 0 || t.cost < best.cost || (t.cost == best.cost && c.order < best_order))) {
+      best = std::move(t);
+      best_order = c.order;
+    }
   }
   // Turning in place, at least min_in_place_vel_theta. A turn ends where it began, so all turns
   // score alike; as base_local_planner, the one whose heading then points at the cell nearest to
@@ -246,7 +337,9 @@ bool LocalPlanner::computeVelocity(const Costmap& costmap, const Footprint& foot
     vth = vth > 0 ? std::max(vth, options_.min_in_place_vel_theta) : std::min(vth, -options_.min_in_place_vel_theta);
     Velocity2 command;
     command.theta = vth;
-    Trajectory t = simulate(costmap, footprint, pose, command);
+    const Rollout r = rollout(pose, command);
+    if (best.cost >= 0 && lowestScore(costmap, footprint, r) > best.cost) continue;  // cannot score as well
+    Trajectory t = check(costmap, footprint, r);
     if (t.cost < 0 || t.poses.empty() || (best.cost >= 0 && t.cost > best.cost)) continue;
     const Pose2& end = t.poses.back();
     unsigned mx, my;
@@ -260,7 +353,12 @@ bool LocalPlanner::computeVelocity(const Costmap& costmap, const Footprint& foot
     }
   }
   if (best.cost >= 0) return true;
-  consider(options_.escape_vel, 0.0);  // back out
+  Velocity2 back;  // back out
+  back.x = options_.escape_vel;
+  if (isAMove(back.x, 0.0)) {
+    Trajectory t = simulate(costmap, footprint, pose, back);
+    if (t.cost >= 0) best = std::move(t);
+  }
   if (best.cost >= 0) return true;
   return fail("no valid trajectory: every sampled command would bring the footprint onto an obstacle within sim_time");
 }

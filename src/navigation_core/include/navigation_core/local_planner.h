@@ -10,6 +10,7 @@
 //
 // Distances are counted in cells over the costmap around obstacles (in metres with meter_scoring),
 // 8-connected where base_local_planner's map grid is 4-connected (local_planner.cpp says why).
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -73,10 +74,35 @@ class LocalPlanner {
                               double sin_theta);
 
  private:
+  // One constant command's poses over sim_time, with each pose's heading cosine and sine.
+  struct Rollout {
+    Velocity2 command;
+    std::vector<Pose2> poses;
+    std::vector<double> cos_theta, sin_theta;
+  };
+
   void distanceGrid(const Costmap& costmap, const std::vector<unsigned>& seeds, std::vector<double>& out) const;
+  // A command worth a trajectory: not slower than min_vel_trans and min_in_place_vel_theta both.
+  bool isAMove(double vx, double vtheta) const {
+    return !(std::abs(vx) < options_.min_vel_trans && std::abs(vtheta) < options_.min_in_place_vel_theta);
+  }
+  Rollout rollout(const Pose2& pose, const Velocity2& command) const;
+  // The rollout's footprints checked in turn: the trajectory as far as it is safe, and its cost.
+  Trajectory check(const Costmap& costmap, const Footprint& footprint, const Rollout& rollout) const;
+  // Whether the distance grids are this costmap's (computeVelocity made them).
+  bool scored(const Costmap& costmap) const;
+  double score(const Costmap& costmap, unsigned end_cell, double highest_cost) const;
+  // The least the rollout can score from a few of its footprints' cells (check() looks at them
+  // all); infinity when those already make it invalid.
+  double lowestScore(const Costmap& costmap, const Footprint& footprint, const Rollout& rollout) const;
 
   LocalPlannerOptions options_;
   std::vector<double> path_distance_, goal_distance_;
+  // distanceGrid's working memory, kept from call to call: its distances in integer steps, and its
+  // bucket queue (one bucket per distance modulo the longest step + 1).
+  static constexpr unsigned kDistanceBuckets = 8;
+  mutable std::vector<unsigned> scratch_distance_;
+  mutable std::vector<unsigned> scratch_buckets_[kDistanceBuckets];
 };
 
 }  // namespace navigation_core

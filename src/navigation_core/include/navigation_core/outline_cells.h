@@ -34,29 +34,33 @@ bool forEachLineCellAfter(int x0, int y0, int x1, int y1, unsigned size_x, Visit
   return true;
 }
 
+// The cell of footprint vertex `v` with the robot at `pose` (heading cosine c, sine s): false when
+// it lies off the costmap.
+inline bool outlineVertexCell(const Costmap& costmap, const Pose2& pose, double c, double s, const Point2& v, int& mx,
+                              int& my) {
+  const double fx = (pose.x + c * v.x - s * v.y - costmap.originX()) / costmap.resolution();
+  const double fy = (pose.y + s * v.x + c * v.y - costmap.originY()) / costmap.resolution();
+  if (!(fx >= 0 && fy >= 0 && fx < static_cast<double>(costmap.sizeX()) && fy < static_cast<double>(costmap.sizeY())))
+    return false;
+  mx = static_cast<int>(fx), my = static_cast<int>(fy);
+  return true;
+}
+
 // visit(index) for every cell of the footprint's outline at `pose`, whose heading's cosine and
-// sine are c and s (the first vertex's cell twice). Returns false when visit stopped the walk or a vertex lies off the costmap
-// (where nothing is known: costmap_2d's check fails there too).
+// sine are c and s (the first vertex's cell twice). Returns false when visit stopped the walk or a
+// vertex lies off the costmap (where nothing is known: costmap_2d's check fails there too).
 template <typename Visit>
 bool forEachOutlineCell(const Costmap& costmap, const Footprint& footprint, const Pose2& pose, double c, double s,
                         Visit&& visit) {
   if (footprint.empty()) return true;
-  const double res = costmap.resolution(), ox = costmap.originX(), oy = costmap.originY();
-  const double nx = costmap.sizeX(), ny = costmap.sizeY();
-  const auto cellOf = [&](const Point2& v, int& mx, int& my) {
-    const double fx = (pose.x + c * v.x - s * v.y - ox) / res, fy = (pose.y + s * v.x + c * v.y - oy) / res;
-    if (!(fx >= 0 && fy >= 0 && fx < nx && fy < ny)) return false;
-    mx = static_cast<int>(fx), my = static_cast<int>(fy);
-    return true;
-  };
   int first_x, first_y;
-  if (!cellOf(footprint.front(), first_x, first_y)) return false;
+  if (!outlineVertexCell(costmap, pose, c, s, footprint.front(), first_x, first_y)) return false;
   // The first vertex's cell, also for an outline that lies in one cell.
   if (!visit(static_cast<unsigned>(first_y) * costmap.sizeX() + static_cast<unsigned>(first_x))) return false;
   int x0 = first_x, y0 = first_y;
   for (std::size_t i = 1; i <= footprint.size(); ++i) {
     int x1 = first_x, y1 = first_y;
-    if (i < footprint.size() && !cellOf(footprint[i], x1, y1)) return false;
+    if (i < footprint.size() && !outlineVertexCell(costmap, pose, c, s, footprint[i], x1, y1)) return false;
     if (!forEachLineCellAfter(x0, y0, x1, y1, costmap.sizeX(), visit)) return false;
     x0 = x1, y0 = y1;
   }
