@@ -287,11 +287,11 @@ bool LocalPlanner::computeVelocity(const Costmap& costmap, const Footprint& foot
   if (min_vx > max_vx) min_vx = max_vx;
   if (min_vth > max_vth) min_vth = max_vth;
 
-  // Every sampled command is rolled out first (no footprints: cheap), and where it ends bounds its
-  // score from below (the footprints' costs can only add to it). The footprints, nearly all of the
-  // work, are then checked in order of that bound, and no more once a bound is above the best
-  // score found: the command checking them all would choose (the lowest score, the first sampled
-  // among equals), at a fraction of the cost.
+  // Every sampled command is rolled out first (no footprints: cheap); where it ends and the cells
+  // under its poses' centres and corners bound its score from below, and rule out most commands
+  // that touch an obstacle. Whole footprints, nearly all of the work, are then checked in order of
+  // that bound, and no more once a bound is above the best score found: the command checking them
+  // all would choose (the lowest score, the first sampled among equals), at a fraction of the cost.
   struct Candidate {
     Rollout rollout;
     double lowest;
