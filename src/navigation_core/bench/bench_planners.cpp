@@ -69,6 +69,31 @@ Point2 freePoint(const Costmap& map, std::mt19937& rng) {
   }
 }
 
+struct LocalCase {
+  Pose2 pose;
+  std::vector<Point2> plan;  // from the robot on
+};
+
+// 200 local planner cycles, the cases in turn, the robot moving at `speed`: mean and worst times.
+void timeLocalPlanner(const char* what, LocalPlanner& planner, const Costmap& window, const Footprint& footprint,
+                      const std::vector<LocalCase>& cases, double speed) {
+  double total = 0, worst = 0;
+  const int cycles = 200;
+  for (int k = 0; k < cycles; ++k) {
+    const LocalCase& c = cases[static_cast<std::size_t>(k) % cases.size()];
+    Trajectory best;
+    std::string why;
+    Velocity2 v;
+    v.x = speed;
+    const auto start = std::chrono::steady_clock::now();
+    planner.computeVelocity(window, footprint, c.pose, v, c.plan, best, &why);
+    const double us = 1000 * millisecondsSince(start);
+    total += us;
+    worst = std::max(worst, us);
+  }
+  std::printf("local planner cycle 80x80 window%s: %.0f us mean, %.0f us worst\n", what, total / cycles, worst);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -104,20 +129,7 @@ int main(int argc, char** argv) {
     LocalPlanner planner{LocalPlannerOptions()};
     std::vector<Point2> plan;
     for (int k = 0; k <= 80; ++k) plan.push_back({0.2 + 3.6 * k / 80, 2.0 + 1.5 * std::sin(k * 0.08)});
-    double total = 0, worst = 0;
-    const int cycles = 200;
-    for (int k = 0; k < cycles; ++k) {
-      Trajectory best;
-      std::string why;
-      Velocity2 v;
-      v.x = 0.2;
-      const auto start = std::chrono::steady_clock::now();
-      planner.computeVelocity(window, kFootprint, {0.2, 2.0, 0.0}, v, plan, best, &why);
-      const double us = 1000 * millisecondsSince(start);
-      total += us;
-      worst = std::max(worst, us);
-    }
-    std::printf("local planner cycle 80x80 window: %.0f us mean, %.0f us worst\n", total / cycles, worst);
+    timeLocalPlanner("", planner, window, kFootprint, {{{0.2, 2.0, 0.0}, plan}}, 0.2);
   }
   {
     const Footprint pioneer_footprint = {{-0.29, -0.22}, {-0.29, 0.22}, {0.20, 0.22}, {0.20, -0.22}};
@@ -139,25 +151,13 @@ int main(int argc, char** argv) {
     o.max_vel_x = 0.5, o.acc_lim_x = 1.0, o.acc_lim_theta = 2.0, o.sim_time = 1.5, o.vx_samples = 6;
     o.meter_scoring = true, o.min_in_place_vel_theta = 0.5;
     LocalPlanner planner(o);
-    double total = 0, worst = 0;
-    const int cycles = 200;
-    for (int k = 0; k < cycles; ++k) {
-      const std::size_t at = static_cast<std::size_t>(k % 40) * 2;  // on the path, heading along it, at half speed
+    std::vector<LocalCase> along;  // on the path, heading along it
+    for (std::size_t at = 0; at < 80; at += 2) {
       const Point2& p = plan[at];
-      Trajectory best;
-      std::string why;
-      Velocity2 v;
-      v.x = 0.25;
-      const std::vector<Point2> ahead(plan.begin() + static_cast<std::ptrdiff_t>(at), plan.end());
-      const auto start = std::chrono::steady_clock::now();
-      planner.computeVelocity(window, pioneer_footprint, {p.x, p.y, std::atan2(plan[at + 1].y - p.y, plan[at + 1].x - p.x)},
-                              v, ahead, best, &why);
-      const double us = 1000 * millisecondsSince(start);
-      total += us;
-      worst = std::max(worst, us);
+      along.push_back({{p.x, p.y, std::atan2(plan[at + 1].y - p.y, plan[at + 1].x - p.x)},
+                       std::vector<Point2>(plan.begin() + static_cast<std::ptrdiff_t>(at), plan.end())});
     }
-    std::printf("local planner cycle 80x80 window, the Pioneer in a corridor: %.0f us mean, %.0f us worst\n",
-                total / cycles, worst);
+    timeLocalPlanner(", the Pioneer in a corridor", planner, window, pioneer_footprint, along, 0.25);  // half speed
   }
   {
     std::mt19937 rng(seed);
