@@ -1,16 +1,22 @@
 // bullet_sim_node: the simulator, started like gzserver:
 //   rosrun bullet_sim bullet_sim_node [-u] [--verbose] [--timing] [GZSERVER_OPTIONS] [WORLD_FILE]
 //   rosrun bullet_sim bullet_sim_node --list-plugins
-// -u starts paused. Without a world file the empty world (ground plane + sun) is loaded.
+// -u starts paused. Without a world file the empty world (ground plane + sun) is loaded. A
+// relative WORLD_FILE is looked for, as gzserver does, in the current folder, then in each folder
+// of GAZEBO_RESOURCE_PATH, then in this package (so Gazebo's `worlds/empty.world` works).
 // --timing prints, at exit, where the loop's time went (see loop_timing.h).
 // --list-plugins prints the plugin libraries models can name, and exits.
 // gzserver's other options (-e bullet, -s libfoo.so, --seed 3, ...) are accepted with a warning.
 // A world file that cannot be read exits with status 1 and a message naming the problem.
 #include <ros/package.h>
 #include <ros/ros.h>
+#include <sys/prctl.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <filesystem>
 #include <iostream>
+#include <sstream>
 #include <vector>
 
 #include "bullet_sim/simulator.h"
@@ -62,9 +68,30 @@ bool parseArguments(const std::vector<std::string>& args, Arguments& out, std::s
   return true;
 }
 
+// The world file as gzserver finds it: a path that exists as given (absolute, or relative to the
+// current folder), else the first folder of GAZEBO_RESOURCE_PATH, then of this package, holding it.
+// Unfound, the name is returned as given and loading it says so.
+std::string findWorldFile(const std::string& name) {
+  namespace fs = std::filesystem;
+  if (name.empty() || fs::path(name).is_absolute() || fs::exists(name)) return name;
+  std::vector<std::string> folders;
+  if (const char* resource_path = std::getenv("GAZEBO_RESOURCE_PATH")) {
+    std::stringstream list(resource_path);
+    for (std::string folder; std::getline(list, folder, ':');)
+      if (!folder.empty()) folders.push_back(folder);
+  }
+  folders.push_back(ros::package::getPath("bullet_sim"));
+  for (const std::string& folder : folders)
+    if (fs::exists(fs::path(folder) / name)) return (fs::path(folder) / name).string();
+  return name;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Named as Gazebo's server is, so that `killall gzserver` (in the tutorials) stops the simulator
+  // however it was started. Threads started later inherit the name.
+  prctl(PR_SET_NAME, "gzserver", 0, 0, 0);
   ros::init(argc, argv, "gazebo");
   std::vector<std::string> args;
   ros::removeROSArgs(argc, argv, args);
@@ -90,7 +117,7 @@ int main(int argc, char** argv) {
 
   const bullet_sim::ResourceResolver resolver = bullet_sim::ResourceResolver::fromEnvironment();
   bullet_sim::WorldDescription world;
-  std::string world_file = arguments.world_file;
+  std::string world_file = findWorldFile(arguments.world_file);
   if (world_file.empty()) world_file = ros::package::getPath("bullet_sim") + "/worlds/empty.world";
   try {
     world = bullet_sim::parseWorldFile(world_file, resolver);
