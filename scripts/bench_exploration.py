@@ -47,11 +47,11 @@ from explore_demo import Watch  # noqa: E402
 
 ROBOTS = {
     'm_robot': dict(launch=['find_frontier', 'explore_maze.launch'], model='m_robot',
-                    walls=os.path.join(ROOT, 'src', 'm_robot_sim', 'config', 'capstone_map_walls.yaml'),
+                    walls=os.path.join(ROOT, 'src', 'm_robot_gazebo', 'config', 'capstone_map_walls.yaml'),
                     inscribed=0.12, outline=(0.26, 0.22, 0.0), laser_range=6.0, rtf=30.0, timeout=600.0,
                     mapper='hector'),
     'pioneer': dict(launch=['pioneer_2dnav', 'explore.launch'], model='pioneer',
-                    walls=os.path.join(ROOT, 'src', 'pioneer_sim', 'config', 'pioneer_maze_walls.yaml'),
+                    walls=os.path.join(ROOT, 'src', 'pioneer_gazebo', 'config', 'pioneer_maze_walls.yaml'),
                     inscribed=0.2, outline=(0.44, 0.38, -0.045), laser_range=30.0, rtf=22.0, timeout=1500.0,
                     mapper='gmapping'),
 }

@@ -35,10 +35,10 @@ from bench_node_rtf import (each_robot_in_its_own_process, launch_on_private_mas
 # name: mapping launch, model, cmd_vel, scan topic, base frame, tour, ground-truth odometry (the drive
 # plugin's, odometrySource world)
 ROBOTS = {
-    'm_robot': (['m_robot_sim', 'm_robot_mapping.launch'], 'm_robot', '/cmd_vel', '/m_robot/laser/scan',
-                'base_frame', 'src/m_robot_sim/config/mapping_tour.yaml', '/odom'),
-    'pioneer': (['pioneer_sim', 'pioneer_mapping.launch'], 'pioneer', '/pioneer/cmd_vel', '/pioneer/laser/scan',
-                'base_link', 'src/pioneer_sim/config/mapping_tour.yaml', '/pioneer/odom'),
+    'm_robot': (['m_robot_gazebo', 'm_robot_mapping.launch'], 'm_robot', '/cmd_vel', '/m_robot/laser/scan',
+                'base_frame', 'src/m_robot_gazebo/config/mapping_tour.yaml', '/odom'),
+    'pioneer': (['pioneer_gazebo', 'pioneer_mapping.launch'], 'pioneer', '/pioneer/cmd_vel', '/pioneer/laser/scan',
+                'base_link', 'src/pioneer_gazebo_ros/pioneer_gazebo/config/mapping_tour.yaml', '/pioneer/odom'),
 }
 # The node's parameters bench_mapping_bag takes (the map and the beam filters).
 BAG_PARAMETERS = ('map_resolution', 'map_size', 'map_start_x', 'map_start_y', 'map_multi_res_levels',

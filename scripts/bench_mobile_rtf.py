@@ -4,9 +4,9 @@ brought up by its own launch file, headless, on a private roscore, while it driv
 
   bench_mobile_rtf.py [--seconds S] [--robot m_robot|pioneer]
 
-  m_robot  m_robot_sim m_robot_world.launch: skid steer at 100 Hz, 359-beam lidar at 5.5 Hz,
+  m_robot  m_robot_gazebo m_robot_world.launch: skid steer at 100 Hz, 359-beam lidar at 5.5 Hz,
            800x800 camera at 30 Hz, in the Capstone maze
-  pioneer  pioneer_sim pioneer_world.launch: diff drive at 100 Hz, 720-beam Hokuyo at 40 Hz,
+  pioneer  pioneer_gazebo pioneer_world.launch: diff drive at 100 Hz, 720-beam Hokuyo at 40 Hz,
            800x800 camera at 30 Hz, in the 8 x 8 m maze
 
 The laser and the camera are subscribed (they only work with a reader, as in Gazebo). For each
@@ -30,9 +30,9 @@ from bench_node_rtf import (ArrivalListener, each_robot_in_its_own_process, laun
 
 # name, launch, model, cmd_vel, scan, image
 ROBOTS = [
-    ('m_robot', ['m_robot_sim', 'm_robot_world.launch'], 'm_robot', '/cmd_vel', '/m_robot/laser/scan',
+    ('m_robot', ['m_robot_gazebo', 'm_robot_world.launch'], 'm_robot', '/cmd_vel', '/m_robot/laser/scan',
      '/m_robot/camera1/image_raw'),
-    ('pioneer', ['pioneer_sim', 'pioneer_world.launch'], 'pioneer', '/pioneer/cmd_vel', '/pioneer/laser/scan',
+    ('pioneer', ['pioneer_gazebo', 'pioneer_world.launch'], 'pioneer', '/pioneer/cmd_vel', '/pioneer/laser/scan',
      '/pioneer/camera1/image_raw'),
 ]
 

@@ -55,11 +55,11 @@ LOCALISATION_ALLOWANCE = 0.06
 # width, centre ahead of the base), the planners' inscribed radius and max_vel_x, the goal clearance.
 ROBOTS = {
     'm_robot': dict(launch=['find_frontier', 'm_robot_navigation.launch'], model='m_robot',
-                    walls=os.path.join(ROOT, 'src', 'm_robot_sim', 'config', 'capstone_map_walls.yaml'),
+                    walls=os.path.join(ROOT, 'src', 'm_robot_gazebo', 'config', 'capstone_map_walls.yaml'),
                     spawn=(0.0, 0.0, 0.0), outline=(0.26, 0.22, 0.0), inscribed=0.12, max_vel=0.3,
                     goal_clearance=0.25, xy_tolerance=0.15, rtf=20.0),
     'pioneer': dict(launch=['pioneer_2dnav', 'pioneer_navigation.launch'], model='pioneer',
-                    walls=os.path.join(ROOT, 'src', 'pioneer_sim', 'config', 'pioneer_maze_walls.yaml'),
+                    walls=os.path.join(ROOT, 'src', 'pioneer_gazebo', 'config', 'pioneer_maze_walls.yaml'),
                     spawn=(-3.2, -3.2, 0.0), outline=(0.44, 0.38, -0.045), inscribed=0.22, max_vel=0.5,
                     goal_clearance=0.42, xy_tolerance=0.2, rtf=10.0),
 }

@@ -68,7 +68,7 @@ VEHICLES = {
     'm_robot': ('src/m_robot_description/urdf/m_robot.xacro', 0.1),
     're510': ('src/simple_vehicle_description/urdf/simple_vehicle.xacro', 0.0),
     'skid4': ('src/bullet_sim_core/bench/skid4.urdf', 0.0),
-    'pioneer': ('src/pioneer_description/urdf/pioneer3dx.xacro', 0.0),
+    'pioneer': ('src/pioneer_gazebo_ros/pioneer_description/urdf/pioneer3dx.xacro', 0.0),
 }
 # Case: (forward speed m/s, yaw rate rad/s) of the cmd_vel.
 CASES = {'turn': (0.0, 0.5), 'straight': (0.3, 0.0), 'arc': (0.3, 0.3)}

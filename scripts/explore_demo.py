@@ -31,7 +31,7 @@ from bullet_sim_testing.mobile import yaw_of  # noqa: E402
 from bullet_sim_testing.navigation import outline, touches_a_wall  # noqa: E402
 from bullet_sim_testing.walls import load_walls  # noqa: E402
 
-WALLS = os.path.join(ROOT, 'src', 'm_robot_sim', 'config', 'capstone_map_walls.yaml')
+WALLS = os.path.join(ROOT, 'src', 'm_robot_gazebo', 'config', 'capstone_map_walls.yaml')
 INSCRIBED = 0.12            # m_robot's padded footprint (find_frontier/config/costmap_common.yaml)
 OUTLINE = (0.26, 0.22)      # its body and wheels (m)
 LASER_RANGE = 6.0

@@ -2,7 +2,9 @@
 """Runs every test of the workspace and prints one summary line per suite, then a total.
 
 gtest binaries built by catkin_add_gtest, pytest on the pure-Python unit tests (tests/ and
-src/*/test/unit), and every rostest launch file src/*/test/*.test (each starts its own roscore).
+PKG/test/unit of every package under src/), every rostest launch file PKG/test/*.test (each
+starts its own roscore), and every tutorial walkthrough PKG/test/walkthrough/test_*.py (pytest
+driving real processes in a new user's home; each file a suite of its own).
 Results are read back from the runners' JUnit XML files, so a crash that writes no result
 counts as a failure. Exit status is 0 only if everything passed and at least one test ran.
 
@@ -15,6 +17,8 @@ import subprocess
 import sys
 import time
 import xml.etree.ElementTree as ET
+
+from catkin_pkg.packages import find_packages
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RESULTS = os.path.join(ROOT, "test_results")
@@ -76,6 +80,18 @@ def run(name, cmd, xml_path, env=None, timeout=900):
     return passed, failed, skipped
 
 
+def stop_walkthrough_leftovers():
+    """A walkthrough killed at its time limit cannot stop what it started; its processes carry
+    TUTORIAL_WALKTHROUGH_SESSION in their environment (tutorial_walkthroughs' user_session.py)."""
+    for pid in filter(str.isdigit, os.listdir("/proc")):
+        try:
+            with open("/proc/%s/environ" % pid, "rb") as f:
+                if any(v.startswith(b"TUTORIAL_WALKTHROUGH_SESSION=") for v in f.read().split(b"\0")):
+                    os.kill(int(pid), 9)
+        except OSError:
+            pass
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--only", default="", help="run only suites whose name contains this")
@@ -89,7 +105,10 @@ def main():
             xml = os.path.join(RESULTS, "gtest", os.path.basename(binary) + ".xml")
             suites.append((name, [binary, "--gtest_output=xml:" + xml], xml))
 
-    unit_dirs = [d for d in [os.path.join(ROOT, "tests")] + sorted(glob.glob(os.path.join(ROOT, "src", "*", "test", "unit")))
+    # Packages may sit in sub-folders of src/ (src/names/, src/pioneer_gazebo_ros/).
+    packages = sorted((package.name, os.path.join(ROOT, "src", path))
+                      for path, package in find_packages(os.path.join(ROOT, "src")).items())
+    unit_dirs = [d for d in [os.path.join(ROOT, "tests")] + [os.path.join(folder, "test", "unit") for _, folder in packages]
                  if glob.glob(os.path.join(d, "test_*.py"))]
     if unit_dirs:
         xml = os.path.join(RESULTS, "pytest.xml")
@@ -99,13 +118,22 @@ def main():
                        xml))
 
     rostest_env = dict(os.environ, ROS_TEST_RESULTS_DIR=os.path.join(RESULTS, "rostest"))
-    for launch in sorted(glob.glob(os.path.join(ROOT, "src", "*", "test", "*.test"))):
-        package = launch.split(os.sep)[-3]
+    launches = [(package, launch) for package, folder in packages
+                for launch in sorted(glob.glob(os.path.join(folder, "test", "*.test")))]
+    for package, launch in launches:
         test = os.path.splitext(os.path.basename(launch))[0]
         base = os.path.join(RESULTS, "rostest", package + "." + test)
         xml = os.path.join(base, package, "rostest-test_%s.xml" % test)
         suites.append(("rostest %s %s.test" % (package, test),
                        ["rostest", "--results-base-dir", base, package, test + ".test"], xml))
+
+    for package, folder in packages:
+        for walkthrough in sorted(glob.glob(os.path.join(folder, "test", "walkthrough", "test_*.py"))):
+            test = os.path.splitext(os.path.basename(walkthrough))[0]
+            xml = os.path.join(RESULTS, "walkthrough", test + ".xml")
+            suites.append(("walkthrough %s" % test,
+                           [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "--junitxml=" + xml,
+                            walkthrough], xml))
 
     totals = [0, 0, 0]
     for name, cmd, xml in suites:
@@ -116,6 +144,8 @@ def main():
         env = rostest_env if name.startswith("rostest") else None
         for i, n in enumerate(run(name, cmd, xml, env=env)):
             totals[i] += n
+        if name.startswith("walkthrough"):
+            stop_walkthrough_leftovers()
     print()
     print("%d passed, %d failed, %d skipped" % tuple(totals))
     return 0 if totals[1] == 0 and totals[0] > 0 else 1

@@ -16,6 +16,7 @@ import subprocess
 import xml.etree.ElementTree as ET
 
 import pytest
+from catkin_pkg.packages import find_packages
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SRC = os.path.join(ROOT, 'src')
@@ -36,16 +37,20 @@ def core_sources():
                 yield path
 
 
+# Package name -> its folder; packages may sit in sub-folders (src/names/, src/pioneer_gazebo_ros/).
+PACKAGE_DIRS = {package.name: os.path.join(SRC, path) for path, package in find_packages(SRC).items()}
+
+
 def manifest(package):
-    """(run/build dependencies, test dependencies) of src/<package>/package.xml."""
-    root = ET.parse(os.path.join(SRC, package, 'package.xml')).getroot()
+    """(run/build dependencies, test dependencies) of the package's package.xml."""
+    root = ET.parse(os.path.join(PACKAGE_DIRS[package], 'package.xml')).getroot()
     depends = {e.text.strip() for e in root if e.tag in ('depend', 'build_depend', 'exec_depend', 'build_export_depend')}
     tests = {e.text.strip() for e in root if e.tag == 'test_depend'}
     return depends, tests
 
 
 def workspace_packages():
-    return sorted(os.path.basename(os.path.dirname(p)) for p in glob.glob(os.path.join(SRC, '*', 'package.xml')))
+    return sorted(PACKAGE_DIRS)
 
 
 def test_the_core_includes_no_ros_header():
@@ -104,12 +109,12 @@ def test_no_product_package_depends_on_a_test_package():
     for package in workspace_packages():
         depends, _ = manifest(package)
         assert not (depends & TEST_ONLY), '%s depends on %s' % (package, depends & TEST_ONLY)
-    assert manifest('m_robot_sim')[1] >= {'bullet_sim_testing'}  # tests may use it
+    assert manifest('m_robot_gazebo')[1] >= {'bullet_sim_testing'}  # tests may use it
 
 
 @pytest.mark.parametrize('package', workspace_packages())
 def test_cmake_finds_only_declared_workspace_packages(package):
-    cmake = os.path.join(SRC, package, 'CMakeLists.txt')
+    cmake = os.path.join(PACKAGE_DIRS[package], 'CMakeLists.txt')
     with open(cmake) as f:
         text = f.read()
     found = set()

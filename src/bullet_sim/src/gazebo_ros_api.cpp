@@ -40,6 +40,7 @@ GazeboRosApi::GazeboRosApi(Simulator& sim) : sim_(sim), node_("/gazebo") {
       n.advertiseService("get_model_state", &GazeboRosApi::getModelState, this),
       n.advertiseService("set_model_state", &GazeboRosApi::setModelState, this),
       n.advertiseService("get_link_state", &GazeboRosApi::getLinkState, this),
+      n.advertiseService("set_link_state", &GazeboRosApi::setLinkState, this),
       n.advertiseService("get_model_properties", &GazeboRosApi::getModelProperties, this),
       n.advertiseService("get_joint_properties", &GazeboRosApi::getJointProperties, this),
       n.advertiseService("get_world_properties", &GazeboRosApi::getWorldProperties, this),
@@ -56,6 +57,7 @@ GazeboRosApi::GazeboRosApi(Simulator& sim) : sim_(sim), node_("/gazebo") {
       n.advertiseService("reset_world", &GazeboRosApi::resetWorld, this),
   };
   set_model_state_sub_ = n.subscribe("set_model_state", 10, &GazeboRosApi::setModelStateTopic, this);
+  set_link_state_sub_ = n.subscribe("set_link_state", 10, &GazeboRosApi::setLinkStateTopic, this);
   model_states_pub_.advertise<gazebo_msgs::ModelStates>(n, "model_states", 1);
   link_states_pub_.advertise<gazebo_msgs::LinkStates>(n, "link_states", 1);
   sim_.before_step = [this](const ros::Time& now) { applyTimedForces(now); };
@@ -160,7 +162,7 @@ bool GazeboRosApi::spawn(gazebo_msgs::SpawnModel::Request& req, gazebo_msgs::Spa
     return true;
   }
   res.success = true;
-  res.status_message = service + ": Successfully spawned entity";
+  res.status_message = "SpawnModel: Successfully spawned entity";  // upstream's words, which scripts look for
   ROS_INFO_STREAM(res.status_message << " '" << req.model_name << "'");
   return true;
 }
@@ -265,6 +267,57 @@ bool GazeboRosApi::getLinkState(gazebo_msgs::GetLinkState::Request& req, gazebo_
   res.success = true;
   res.status_message = "GetLinkState: got state";
   return true;
+}
+
+// A model is one multibody (reduced coordinates): its root link can be placed anywhere, which
+// moves the whole model, but the others follow from their joints, so placing one of them would
+// break its joints. Gazebo (maximal coordinates) lets the joints pull such a link back; here it is
+// refused with the way to move it.
+bool GazeboRosApi::applyLinkState(const gazebo_msgs::LinkState& state, std::string& status) {
+  const auto [model_name, link] = splitScoped(state.link_name);
+  PhysicsModel* model = sim_.physics().findModel(model_name);
+  if (link.empty() || !model || !model->hasLink(link)) {
+    status = "SetLinkState: link [" + state.link_name + "] does not exist (expected 'model::link')";
+    return false;
+  }
+  const std::string root = model->linkNames().front();
+  if (link != root) {
+    status = "SetLinkState: link [" + state.link_name + "] hangs on joints from its model's root link [" + root +
+             "]: set the root link's state to move the model, or the joints with set_model_configuration";
+    return false;
+  }
+  Eigen::Isometry3d pose, reference;
+  if (!toPose(state.pose, "SetLinkState: link_state.pose", pose, status)) return false;
+  if (!isFinite(state.twist)) {
+    status = "SetLinkState: link_state.twist: expected finite numbers";
+    return false;
+  }
+  if (!entityPose(state.reference_frame, reference)) {
+    status = "SetLinkState: reference_frame [" + state.reference_frame + "] does not exist";
+    return false;
+  }
+  // The model's frame sits where it sits relative to its root link; the twist asked for is the
+  // link origin's, the model's is its frame origin's.
+  const Eigen::Isometry3d link_to_model = model->linkPose(link).inverse() * model->pose();
+  const Eigen::Isometry3d link_pose = reference * pose;
+  model->setPose(link_pose * link_to_model);
+  Twist twist = toTwist(state.twist);
+  twist.angular = reference.linear() * twist.angular;
+  twist.linear = reference.linear() * twist.linear +
+                 twist.angular.cross(model->pose().translation() - link_pose.translation());
+  model->setTwist(twist);
+  status = "SetLinkState: success";
+  return true;
+}
+
+bool GazeboRosApi::setLinkState(gazebo_msgs::SetLinkState::Request& req, gazebo_msgs::SetLinkState::Response& res) {
+  res.success = applyLinkState(req.link_state, res.status_message);
+  return true;
+}
+
+void GazeboRosApi::setLinkStateTopic(const gazebo_msgs::LinkState::ConstPtr& msg) {
+  std::string status;
+  if (!applyLinkState(*msg, status)) ROS_WARN_STREAM_THROTTLE(1.0, "/gazebo/set_link_state topic: " << status);
 }
 
 bool GazeboRosApi::getModelProperties(gazebo_msgs::GetModelProperties::Request& req,

@@ -11,7 +11,7 @@ import rostest
 
 from bullet_sim_testing.exploration_checks import ExplorationChecks
 
-M_ROBOT_SIM = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'm_robot_sim')
+M_ROBOT_SIM = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'm_robot_gazebo')
 
 
 class MRobotExplorationTest(ExplorationChecks, unittest.TestCase):

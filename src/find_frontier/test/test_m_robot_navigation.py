@@ -13,7 +13,7 @@ from actionlib_msgs.msg import GoalStatus
 
 from bullet_sim_testing.navigation import NavigationChecks
 
-M_ROBOT_SIM = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'm_robot_sim')
+M_ROBOT_SIM = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'm_robot_gazebo')
 
 
 class MRobotNavigationTest(NavigationChecks, unittest.TestCase):

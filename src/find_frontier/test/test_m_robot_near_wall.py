@@ -15,7 +15,7 @@ from actionlib_msgs.msg import GoalStatus
 
 from bullet_sim_testing.navigation import NavigationChecks
 
-M_ROBOT_SIM = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'm_robot_sim')
+M_ROBOT_SIM = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'm_robot_gazebo')
 EAST_WALL_FACE = 0.405       # Wall_1's inner face (world x)
 PADDED = (0.15, 0.12)        # costmap_common.yaml's footprint + footprint_padding: half length, half width
 

@@ -32,4 +32,4 @@ class MRobotTest(MobileRobotChecks, unittest.TestCase):
 
 
 if __name__ == '__main__':
-    rostest.rosrun('m_robot_sim', 'test_m_robot', MRobotTest)
+    rostest.rosrun('m_robot_gazebo', 'test_m_robot', MRobotTest)

@@ -20,4 +20,4 @@ class MRobotMappingTest(MappingRunChecks, unittest.TestCase):
 
 
 if __name__ == '__main__':
-    rostest.rosrun('m_robot_sim', 'test_m_robot_mapping', MRobotMappingTest)
+    rostest.rosrun('m_robot_gazebo', 'test_m_robot_mapping', MRobotMappingTest)

@@ -10,7 +10,7 @@ import rostest
 
 from bullet_sim_testing.exploration_checks import ExplorationChecks
 
-PIONEER_SIM = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'pioneer_sim')
+PIONEER_SIM = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'pioneer_gazebo')
 
 
 class PioneerExploreTest(ExplorationChecks, unittest.TestCase):

@@ -1,5 +1,5 @@
-# The pioneer_sim Python module (maze_walls), installed by catkin_python_setup(); not for pip.
+# The pioneer_gazebo Python module (maze_walls), installed by catkin_python_setup(); not for pip.
 from catkin_pkg.python_setup import generate_distutils_setup
 from setuptools import setup
 
-setup(**generate_distutils_setup(packages=['pioneer_sim'], package_dir={'': 'src'}))
+setup(**generate_distutils_setup(packages=['pioneer_gazebo'], package_dir={'': 'src'}))

@@ -124,4 +124,4 @@ class LegacyNamesTest(unittest.TestCase):
 
 
 if __name__ == '__main__':
-    rostest.rosrun('simple_model_sim', 'test_legacy_names', LegacyNamesTest)
+    rostest.rosrun('simple_model_gazebo', 'test_legacy_names', LegacyNamesTest)

@@ -15,6 +15,7 @@
 #include <gazebo_msgs/JointRequest.h>
 #include <gazebo_msgs/ModelState.h>
 #include <gazebo_msgs/SetModelConfiguration.h>
+#include <gazebo_msgs/SetLinkState.h>
 #include <gazebo_msgs/SetModelState.h>
 #include <gazebo_msgs/SetPhysicsProperties.h>
 #include <gazebo_msgs/SpawnModel.h>
@@ -60,6 +61,9 @@ class GazeboRosApi {
   bool applyModelState(const gazebo_msgs::ModelState& state, std::string& status);
   void setModelStateTopic(const gazebo_msgs::ModelState::ConstPtr& msg);
   bool getLinkState(gazebo_msgs::GetLinkState::Request& req, gazebo_msgs::GetLinkState::Response& res);
+  bool setLinkState(gazebo_msgs::SetLinkState::Request& req, gazebo_msgs::SetLinkState::Response& res);
+  bool applyLinkState(const gazebo_msgs::LinkState& state, std::string& status);
+  void setLinkStateTopic(const gazebo_msgs::LinkState::ConstPtr& msg);
   bool getModelProperties(gazebo_msgs::GetModelProperties::Request& req, gazebo_msgs::GetModelProperties::Response& res);
   bool getJointProperties(gazebo_msgs::GetJointProperties::Request& req, gazebo_msgs::GetJointProperties::Response& res);
   bool getWorldProperties(gazebo_msgs::GetWorldProperties::Request& req, gazebo_msgs::GetWorldProperties::Response& res);
@@ -81,7 +85,7 @@ class GazeboRosApi {
   Simulator& sim_;
   ros::NodeHandle node_;  // /gazebo
   std::vector<ros::ServiceServer> services_;
-  ros::Subscriber set_model_state_sub_;
+  ros::Subscriber set_model_state_sub_, set_link_state_sub_;
   CountedPublisher model_states_pub_, link_states_pub_;
   ros::WallTime last_states_wall_;
   std::vector<TimedJointEffort> joint_efforts_;

@@ -27,4 +27,4 @@ class PioneerDriveTest(MobileRobotChecks, unittest.TestCase):
 
 
 if __name__ == '__main__':
-    rostest.rosrun('pioneer_sim', 'test_pioneer_drive', PioneerDriveTest)
+    rostest.rosrun('pioneer_gazebo', 'test_pioneer_drive', PioneerDriveTest)

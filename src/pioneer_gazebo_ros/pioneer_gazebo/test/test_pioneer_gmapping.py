@@ -24,4 +24,4 @@ class PioneerGmappingTest(MappingRunChecks, unittest.TestCase):
 
 
 if __name__ == '__main__':
-    rostest.rosrun('pioneer_sim', 'test_pioneer_gmapping', PioneerGmappingTest)
+    rostest.rosrun('pioneer_gazebo', 'test_pioneer_gmapping', PioneerGmappingTest)

@@ -20,4 +20,4 @@ class PioneerMappingTest(MappingRunChecks, unittest.TestCase):
 
 
 if __name__ == '__main__':
-    rostest.rosrun('pioneer_sim', 'test_pioneer_mapping', PioneerMappingTest)
+    rostest.rosrun('pioneer_gazebo', 'test_pioneer_mapping', PioneerMappingTest)

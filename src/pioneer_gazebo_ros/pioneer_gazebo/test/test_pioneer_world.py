@@ -15,9 +15,9 @@ from gazebo_msgs.srv import GetLinkState, GetModelState, GetWorldProperties
 from sensor_msgs.msg import CameraInfo, Image, LaserScan
 
 PACKAGE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(PACKAGE, 'src'))  # pioneer_sim.maze_walls, built or not
+sys.path.insert(0, os.path.join(PACKAGE, 'src'))  # pioneer_gazebo.maze_walls, built or not
 
-from pioneer_sim.maze_walls import load_maze, scan_ranges  # noqa: E402
+from pioneer_gazebo.maze_walls import load_maze, scan_ranges  # noqa: E402
 
 SPAWN_X, SPAWN_Y = -3.2, -3.2  # pioneer_world.launch's defaults
 SIGMA = 0.01                   # the Hokuyo's gaussian noise
@@ -126,4 +126,4 @@ class PioneerWorldTest(unittest.TestCase):
 
 
 if __name__ == '__main__':
-    rostest.rosrun('pioneer_sim', 'test_pioneer_world', PioneerWorldTest)
+    rostest.rosrun('pioneer_gazebo', 'test_pioneer_world', PioneerWorldTest)

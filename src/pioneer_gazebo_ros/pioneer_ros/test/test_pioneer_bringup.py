@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """pioneer_bringup.launch: the ground-truth odometry and tf follow the Pioneer's model state,
-and pioneer_controller turns /cmd_vel into /pioneer/cmd_vel (and stops after the timeout).
+and pioneer_pid_controller turns /cmd_vel into /pioneer/cmd_vel (and stops after the timeout).
 Through the controller and the diff drive plugin the robot follows a forward and a turning
 command, stays level, and the drive's odometry agrees with the ground truth."""
 import math
@@ -80,7 +80,7 @@ class PioneerBringupTest(unittest.TestCase):
         start = rospy.Time.now()
         self.command(0.25, 0.3, 1.0)
         sent = self.drive_cmds.since(start)
-        self.assertGreater(len(sent), 10, 'pioneer_controller published nothing on /pioneer/cmd_vel')
+        self.assertGreater(len(sent), 10, 'pioneer_pid_controller published nothing on /pioneer/cmd_vel')
         for m in sent[5:]:
             self.assertAlmostEqual(m.linear.x, 0.25, delta=0.15)
             self.assertAlmostEqual(m.angular.z, 0.3, delta=0.3)

@@ -1,7 +1,7 @@
 """The package's two executables, robot_state_publisher and its pre-Noetic name state_publisher: after
 `catkin build` both are in devel/lib/robot_state_publisher/ and are what rosrun/roslaunch find (one
 match each). That they publish what they should is robot_state_publisher.test's job, and that a
-lecture-style launch file with the old name runs is legacy_names.test's (simple_model_sim)."""
+lecture-style launch file with the old name runs is legacy_names.test's (simple_model_gazebo)."""
 import os
 import stat
 

@@ -56,7 +56,7 @@ def model_sdf(maze):
     """The static SDF model of the maze: one link, a collision and a visual per wall."""
     lines = [
         '<?xml version="1.0"?>',
-        '<!-- Written by pioneer_sim/scripts/write_maze_model from config/pioneer_maze_walls.yaml;',
+        '<!-- Written by pioneer_gazebo/scripts/write_maze_model from config/pioneer_maze_walls.yaml;',
         '     edit that file and run the script again rather than editing this one. -->',
         '<sdf version="1.6">',
         '  <model name="%s">' % maze.model_name,

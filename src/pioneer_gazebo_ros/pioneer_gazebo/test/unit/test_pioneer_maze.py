@@ -12,7 +12,7 @@ import pytest
 PACKAGE = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..')
 sys.path.insert(0, os.path.join(PACKAGE, 'src'))
 
-from pioneer_sim.maze_walls import (Wall, clearance, load_maze, maze_from_dict, model_sdf,  # noqa: E402
+from pioneer_gazebo.maze_walls import (Wall, clearance, load_maze, maze_from_dict, model_sdf,  # noqa: E402
                                     ray_distance, ray_hit, scan_ranges)
 
 WALLS_YAML = os.path.join(PACKAGE, 'config', 'pioneer_maze_walls.yaml')

@@ -53,7 +53,7 @@ def _number(tree, path, default):
 
 
 def config_from_params(params):
-    """A ControllerConfig from the parameter tree of config/pioneer_controller_params.yaml."""
+    """A ControllerConfig from the parameter tree of pioneer_controller_params.yaml."""
     params = params or {}
     filter_time = _number(params, ('derivative_filter_time',), 0.0)
 

@@ -13,7 +13,7 @@ sys.path.insert(0, os.path.join(PACKAGE, 'src'))
 from pioneer_ros.velocity_controller import (CLOSED_LOOP, IDLE, OPEN_LOOP, STOPPED,  # noqa: E402
                                              BodyVelocityController, config_from_params)
 
-PARAMS_FILE = os.path.join(PACKAGE, 'config', 'pioneer_controller_params.yaml')
+PARAMS_FILE = os.path.join(PACKAGE, 'pioneer_controller_params.yaml')
 
 
 def shipped_params():
