@@ -10,6 +10,14 @@ namespace bullet_sim {
 namespace {
 // Below this slip speed a contact sticks and keeps Bullet's friction rows (see convertContacts).
 constexpr btScalar kSlipSpeed = 1e-4;  // m/s
+// The position-only pass stops once a sweep changes no contact's separating speed by more than this:
+// a micrometre per second, a thousandth of a millisecond's 1 nm (see pushApart).
+constexpr btScalar kPushTolerance = 1e-6;  // m/s
+// The overlap the position-only pass leaves beyond min_depth. Pushed to 0, a resting contact's points
+// are touching in one step and apart in the next, and a can standing on another crept 0.25 mm in
+// 30 s (test_physics_world's CanTower); 2 to 5 um keep them touching (0.01-0.13 mm, as before the
+// pass). Too little to see: a box rests 3 um lower than its size says.
+constexpr btScalar kPushSlop = 3e-6;  // m
 }  // namespace
 
 // Isotropic Coulomb friction for btMultiBody contacts.
@@ -35,6 +43,7 @@ constexpr btScalar kSlipSpeed = 1e-4;  // m/s
 // a wheeled robot's step, and rebuilding two rows per sliding contact after Bullet's cost it 8 %.
 void ContactSolver::convertContacts(btPersistentManifold** manifolds, int count, const btContactSolverInfo& info) {
   lone_contact_.clear();
+  corrections_.clear();
   const bool two_directions = info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS;
   for (int m = 0; m < count; ++m) {
     btPersistentManifold* manifold = manifolds[m];
@@ -51,6 +60,14 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int count,
     lone_contact_.resize(m_multiBodyNormalContactConstraints.size(), false);
     // Warm started: a contact that is its manifold's one point (both conversions give it two friction rows).
     if (made == 1 && two_directions) lone_contact_[first] = true;
+    // A velocity target without Bullet's push out of the overlap, which pushApart makes instead.
+    for (int c = first; c < m_multiBodyNormalContactConstraints.size(); ++c) {
+      btMultiBodySolverConstraint& normal = m_multiBodyNormalContactConstraints[c];
+      const auto& point = *static_cast<const btManifoldPoint*>(normal.m_originalContactPoint);
+      const btScalar gap = std::max<btScalar>(point.getDistance(), 0);  // may close within the step
+      normal.m_rhs = -(normalVelocity(normal) + gap / info.m_timeStep) * normal.m_jacDiagABInv;
+      corrections_.push_back(correctionOf(manifold, point));
+    }
   }
   // Joint motors, limits and attachments: Bullet's rows.
   for (int i = 0; i < m_tmpNumMultiBodyConstraints; ++i) {
@@ -251,6 +268,7 @@ btScalar ContactSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies
                                                       const btContactSolverInfo& info) {
   ++solves_;
   const btScalar result = btMultiBodyConstraintSolver::solveGroupCacheFriendlyFinish(bodies, num_bodies, info);
+  pushApart(info);
   // Each contact's friction impulse, which Bullet wrote back along its two rows, kept along
   // btPlaneSpace1's directions for the next step's warm start.
   if (m_multiBodyFrictionContactConstraints.size() != 2 * m_multiBodyNormalContactConstraints.size()) return result;
@@ -268,6 +286,142 @@ btScalar ContactSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies
     point->m_appliedImpulseLateral2 = friction.dot(e2);
   }
   return result;
+}
+
+// Interpenetration.
+//
+// Bullet's contact row asks the bodies to separate at erp * depth / dt, as velocity, uncapped: with
+// its wheels 0.1 m in the ground, m_robot left it at 20 m/s and flew 20 m up. Gazebo's
+// ODE limits how fast a contact corrects an overlap by its max_vel (SDF <surface><contact><ode>
+// <max_vel>, 0.01 m/s by default; the smaller of the two bodies' where both move, capped by the
+// world's <contact_max_correcting_vel>) and leaves min_depth of it (0 by default) uncorrected.
+//
+// Here the correction moves positions only, as Bullet's split impulse does for rigid bodies: the
+// velocity rows ask for no separation (convertContacts), so the bodies gain no kinetic energy from
+// an overlap, and pushApart then solves the normal rows once more, on velocities of their own that
+// move the positions in this step and are dropped after it (btMultiBody's split velocity, which
+// btMultiBodyDynamicsWorld adds while it integrates positions and then removes). Each contact asks
+// for erp * (depth - min_depth - kPushSlop) / dt of separation, capped by its max_vel: a box 0.1 m
+// into the ground rises at 0.01 m/s for 10 s and stands on it at rest. Only contacts take part in
+// this pass: joints keep their frames (it moves the multibody's own coordinates), and a joint limit
+// it pushes a link into is corrected by the limit's own row in the next step.
+//
+// Where Gazebo differs (docs/SIMULATOR.md, "Interpenetration"): its quick step integrates the
+// positions with the uncapped erp * depth / dt, and caps only the velocity kept after the step at
+// max_vel; a body leaves an overlap within a step or a few, and keeps up to max_vel of speed.
+ContactSolver::Correction ContactSolver::correctionOf(const btPersistentManifold* manifold,
+                                                      const btManifoldPoint& point) const {
+  // A collider's surfaces by the child shape of its compound that touches (the manifold's m_index).
+  const auto surfaceOf = [](const btCollisionObject* object, int child) -> const ContactSurface* {
+    const auto* surfaces = static_cast<const ColliderSurfaces*>(object->getUserPointer());
+    if (!surfaces || surfaces->by_child.empty()) return nullptr;
+    if (child < 0 || child >= static_cast<int>(surfaces->by_child.size())) child = 0;  // not expected
+    return &surfaces->by_child[child];
+  };
+  const ContactSurface* a = surfaceOf(manifold->getBody0(), point.m_index0);
+  const ContactSurface* b = surfaceOf(manifold->getBody1(), point.m_index1);
+  Correction c;
+  // As ODE's contact joint in Gazebo: both bodies' surfaces, the one body's, or the world's layer
+  // (never, for our models: a static model has no surfaces, a moving one always has).
+  c.min_depth = a && b ? std::min(a->min_depth, b->min_depth) : a ? a->min_depth : b ? b->min_depth : surface_layer_;
+  c.max_vel = max_correcting_vel_;
+  for (const ContactSurface* s : {a, b})
+    if (s && s->max_vel >= 0) c.max_vel = std::min<btScalar>(c.max_vel, s->max_vel);
+  return c;
+}
+
+// The bodies' velocity along the row (separating when positive), as Bullet computes it for the row.
+btScalar ContactSolver::normalVelocity(const btMultiBodySolverConstraint& row) const {
+  btScalar v = 0;
+  const auto side = [&](const btMultiBody* multibody, int jacobian, int solver_body, const btVector3& normal,
+                        const btVector3& arm) {
+    if (multibody) {
+      const btScalar* velocity = multibody->getVelocityVector();
+      for (int i = 0; i < multibody->getNumDofs() + 6; ++i) v += m_data.m_jacobians[jacobian + i] * velocity[i];
+    } else if (solver_body >= 0) {
+      const btSolverBody& body = m_tmpSolverBodyPool[solver_body];
+      v += normal.dot(body.m_linearVelocity + body.m_externalForceImpulse) +
+           arm.dot(body.m_angularVelocity + body.m_externalTorqueImpulse);
+    }
+  };
+  side(row.m_multiBodyA, row.m_jacAindex, row.m_solverBodyIdA, row.m_contactNormal1, row.m_relpos1CrossNormal);
+  side(row.m_multiBodyB, row.m_jacBindex, row.m_solverBodyIdB, row.m_contactNormal2, row.m_relpos2CrossNormal);
+  return v;
+}
+
+// Projected Gauss-Seidel over the contact rows (normal and friction) on velocities of their own, at
+// most `iters` sweeps, only in a step where some contact overlaps by more than it may. A normal row
+// pushes only (its impulse stays >= 0), so a contact inside its min_depth, or one still apart, keeps
+// the others' pushes from closing it. Only multibodies move; a rigid body (none in our worlds) stays.
+void ContactSolver::pushApart(const btContactSolverInfo& info) {
+  const int rows = m_multiBodyNormalContactConstraints.size();
+  if (rows == 0 || static_cast<int>(corrections_.size()) != rows) return;
+  push_target_.resize(rows);
+  bool any = false;
+  for (int c = 0; c < rows; ++c) {
+    const auto* point = static_cast<const btManifoldPoint*>(m_multiBodyNormalContactConstraints[c].m_originalContactPoint);
+    const btScalar distance = point->getDistance(), excess = -distance - corrections_[c].min_depth - kPushSlop;
+    push_target_[c] = excess > 0 ? std::min(info.m_erp2 * excess / info.m_timeStep, corrections_[c].max_vel)
+                                 : -std::max<btScalar>(distance, 0) / info.m_timeStep;
+    any = any || push_target_[c] > 0;
+  }
+  if (!any) return;
+  push_velocity_.resize(m_data.m_deltaVelocities.size());
+  for (int i = 0; i < push_velocity_.size(); ++i) push_velocity_[i] = 0;
+  push_impulse_.assign(rows, 0);
+  const auto along = [&](const btMultiBody* multibody, int jacobian, int velocities) {
+    btScalar v = 0;
+    if (multibody)
+      for (int i = 0; i < multibody->getNumDofs() + 6; ++i) v += m_data.m_jacobians[jacobian + i] * push_velocity_[velocities + i];
+    return v;
+  };
+  const auto apply = [&](const btMultiBody* multibody, int jacobian, int velocities, btScalar impulse) {
+    if (multibody)
+      for (int i = 0; i < multibody->getNumDofs() + 6; ++i)
+        push_velocity_[velocities + i] += m_data.m_deltaVelocitiesUnitImpulse[jacobian + i] * impulse;
+  };
+  const int friction_rows = m_multiBodyFrictionContactConstraints.size();
+  push_friction_.assign(friction_rows, 0);
+  // One row towards `target`, its impulse kept within [lower, upper]; returns the change of its speed.
+  const auto solve = [&](const btMultiBodySolverConstraint& row, btScalar target, btScalar& impulse, btScalar lower,
+                         btScalar upper) -> btScalar {
+    if (row.m_jacDiagABInv == 0) return 0;  // a row Bullet disabled (nothing can move along it)
+    const btScalar speed = along(row.m_multiBodyA, row.m_jacAindex, row.m_deltaVelAindex) +
+                           along(row.m_multiBodyB, row.m_jacBindex, row.m_deltaVelBindex);
+    const btScalar next = std::min(upper, std::max(lower, impulse + (target - speed) * row.m_jacDiagABInv));
+    const btScalar change = next - impulse;
+    if (change == 0) return 0;
+    impulse = next;
+    apply(row.m_multiBodyA, row.m_jacAindex, row.m_deltaVelAindex, change);
+    apply(row.m_multiBodyB, row.m_jacBindex, row.m_deltaVelBindex, change);
+    return btFabs(change) / row.m_jacDiagABInv;
+  };
+  for (int sweep = 0; sweep < info.m_numIterations; ++sweep) {
+    btScalar largest = 0;  // change of a row's speed in this sweep
+    for (int c = 0; c < rows; ++c)
+      largest = std::max(largest, solve(m_multiBodyNormalContactConstraints[c], push_target_[c], push_impulse_[c], 0,
+                                        BT_LARGE_FLOAT));
+    // Friction holds the contacts still while they are pushed, as in the velocity sweeps: pushed out
+    // along its normals alone, a can standing on another tilts and slides off it a little each step.
+    for (int f = 0; f < friction_rows; ++f) {
+      const btMultiBodySolverConstraint& row = m_multiBodyFrictionContactConstraints[f];
+      const btScalar limit = row.m_friction * push_impulse_[row.m_frictionIndex];
+      largest = std::max(largest, solve(row, 0, push_friction_[f], -limit, limit));
+    }
+    if (largest <= kPushTolerance) break;
+  }
+  // Each moving body's share, once: btMultiBodyDynamicsWorld moves the positions with it this step.
+  given_.assign(push_velocity_.size(), 0);
+  const auto give = [&](btMultiBody* multibody, int velocities) {
+    if (!multibody || given_[velocities]) return;
+    given_[velocities] = 1;
+    multibody->applyDeltaSplitVeeMultiDof(&push_velocity_[velocities], 1);
+  };
+  for (int c = 0; c < rows; ++c) {
+    const btMultiBodySolverConstraint& row = m_multiBodyNormalContactConstraints[c];
+    give(row.m_multiBodyA, row.m_deltaVelAindex);
+    give(row.m_multiBodyB, row.m_deltaVelBindex);
+  }
 }
 
 }  // namespace bullet_sim

@@ -206,11 +206,13 @@ void PhysicsModel::buildMultiBody(const Eigen::Isometry3d& pose, double step_siz
     const BodyPlan& plan = plans[i];
     for (const auto& [link, frame] : plan.members) links_[link->name] = LinkRef{i - 1, plan.com.inverse() * frame};
     btCompoundShape* compound = shapes_.makeCompound();
+    auto surfaces = std::make_unique<ColliderSurfaces>();  // the contact solver's, by child shape
     double mu = 1.0;
     for (const auto& [link, frame] : plan.members) {
       for (const auto& c : link->collisions) {
         compound->addChildShape(toBullet(plan.com.inverse() * frame * c.origin),
                                 shapes_.make(c.geometry, false, description_.source + ": <link name='" + link->name + "'>"));
+        surfaces->by_child.push_back(c.surface);
         mu = 0.5 * (link->mu1 + link->mu2);
       }
     }
@@ -219,6 +221,8 @@ void PhysicsModel::buildMultiBody(const Eigen::Isometry3d& pose, double step_siz
     auto collider = std::make_unique<btMultiBodyLinkCollider>(multibody_.get(), i - 1);
     collider->setCollisionShape(compound);
     collider->setFriction(mu);
+    collider->setUserPointer(surfaces.get());
+    collider_surfaces_.push_back(std::move(surfaces));
     collider->setActivationState(DISABLE_DEACTIVATION);
     const bool is_fixed = (i == 0 && fixed_base);
     world_.addCollisionObject(collider.get(),

@@ -68,8 +68,15 @@ void PhysicsWorld::setSettings(const PhysicsSettings& s) {
   if (!std::isfinite(s.solver_tolerance) || s.solver_tolerance < 0)
     throw DescriptionError("physics: solver tolerance: expected a velocity >= 0 m/s, got " +
                            std::to_string(s.solver_tolerance));
+  if (!std::isfinite(s.contact_max_correcting_vel) || s.contact_max_correcting_vel < 0)
+    throw DescriptionError("physics: contact_max_correcting_vel: expected a velocity >= 0 m/s, got " +
+                           std::to_string(s.contact_max_correcting_vel));
+  if (!std::isfinite(s.contact_surface_layer) || s.contact_surface_layer < 0)
+    throw DescriptionError("physics: contact_surface_layer: expected a depth >= 0 m, got " +
+                           std::to_string(s.contact_surface_layer));
   settings_ = s;
   world_->setGravity(toBullet(s.gravity));
+  solver_->setContactCorrection(s.contact_max_correcting_vel, s.contact_surface_layer);
   world_->getSolverInfo().m_numIterations = s.solver_iterations;
   // Bullet's residual is the largest squared change of a row's velocity in a sweep.
   world_->getSolverInfo().m_leastSquaresResidualThreshold = s.solver_tolerance * s.solver_tolerance;

@@ -139,6 +139,15 @@ std::vector<PluginDescription> parsePlugins(const SdfElement& parent) {
   return out;
 }
 
+// A collision's <surface><contact><ode>: how its contacts push out of an overlap. A negative max_vel
+// is Gazebo's "no limit of this surface's own" (the world's contact_max_correcting_vel applies).
+ContactSurface parseContactSurface(const SdfElement& ode) {
+  ContactSurface out;
+  out.max_vel = ode.number("max_vel", out.max_vel);
+  out.min_depth = ode.number("min_depth", out.min_depth, nonNegative());
+  return out;
+}
+
 // One <link>: its inertial, shapes and sensors, all in the link frame.
 LinkDescription parseLink(const Ctx& c, const SdfElement& l, ModelDescription& model) {
   LinkDescription out;
@@ -171,6 +180,7 @@ LinkDescription parseLink(const Ctx& c, const SdfElement& l, ModelDescription& m
       out.mu2 = ode.number("mu2", 1.0, nonNegative());
       friction_set = true;
     }
+    s.surface = parseContactSurface(e.child("surface").child("contact").child("ode"));
     out.collisions.push_back(s);
   }
   for (const SdfElement& e : l.children("visual")) {
@@ -449,9 +459,15 @@ void parsePhysics(const SdfElement& p, PhysicsSettings& out) {
   out.gravity = p.vector3("gravity", out.gravity);  // SDF <= 1.5
   // The solver's sweeps, from the engine's block Gazebo would use (ODE's unless type says bullet).
   const std::string engine = p.attribute("type") == "bullet" ? "bullet" : "ode";
-  if (const SdfElement e = p.child(engine.c_str()))
+  if (const SdfElement e = p.child(engine.c_str())) {
     if (const SdfElement solver = e.child("solver"))
       out.solver_iterations = static_cast<int>(solver.integer("iters", out.solver_iterations, 1, 100000));
+    // How fast contacts push overlapping bodies apart (Bullet's block has the surface layer only).
+    const SdfElement constraints = e.child("constraints");
+    out.contact_max_correcting_vel =
+        constraints.number("contact_max_correcting_vel", out.contact_max_correcting_vel, nonNegative());
+    out.contact_surface_layer = constraints.number("contact_surface_layer", out.contact_surface_layer, nonNegative());
+  }
 }
 
 // World plugins are not loaded; gazebo_ros's own (its API, paths, state) are built into the node.

@@ -206,13 +206,23 @@ std::vector<PluginDescription> readPlugins(const SdfElement& parent) {
   return out;
 }
 
-// A <gazebo reference="link"> block: friction, material and sensors of that link.
+// A <gazebo reference="link"> block: friction, contact correction, material and sensors of that link.
 void readLinkBlock(const SdfElement& block, LinkDescription& link, ModelDescription& model) {
   link.mu1 = block.number("mu1", link.mu1, nonNegative());
   link.mu2 = block.number("mu2", link.mu2, nonNegative());
   // Gazebo's URDF importer turns <turnGravityOff> into SDF's <gravity>; either is accepted.
   link.gravity = !block.boolean("turnGravityOff", !link.gravity);
   link.gravity = block.boolean("gravity", link.gravity);
+  // Gazebo's URDF importer writes these into every collision of the link as <surface><contact><ode>
+  // max_vel and min_depth (a negative maxVel: only the world's limit, as there).
+  if (const SdfElement max_vel = block.child("maxVel")) {
+    const double v = max_vel.asNumber();
+    for (CollisionShape& c : link.collisions) c.surface.max_vel = v;
+  }
+  if (const SdfElement min_depth = block.child("minDepth")) {
+    const double d = min_depth.asNumber(nonNegative());
+    for (CollisionShape& c : link.collisions) c.surface.min_depth = d;
+  }
   if (const SdfElement material = block.child("material")) {
     // Gazebo paints every visual of the link with it, whatever the URDF's own <material> says.
     const auto colour = gazeboMaterialColour(material.text());

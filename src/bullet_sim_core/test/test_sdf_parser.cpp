@@ -112,6 +112,42 @@ TEST(SdfWorldParser, SolverItersComeFromTheEngineInUse) {
   EXPECT_EQ(iters("<physics type='ode'><bullet><solver><iters>70</iters></solver></bullet></physics>"), 50);
 }
 
+// How contacts push out of an overlap: per collision from <surface><contact><ode>, for the world
+// from the engine's <constraints>, with SDF's defaults.
+TEST(SdfWorldParser, ContactCorrectionFromSurfacesAndPhysics) {
+  const ResourceResolver r;
+  const WorldDescription w = parseWorldString(
+      worldWith("<physics><ode><constraints><contact_max_correcting_vel>5</contact_max_correcting_vel>"
+                "<contact_surface_layer>0.002</contact_surface_layer></constraints></ode></physics>"
+                "<model name='m'><link name='l'>"
+                "<collision name='a'><geometry><sphere><radius>1</radius></sphere></geometry><surface><contact><ode>"
+                "<max_vel>0.1</max_vel><min_depth>0.003</min_depth></ode></contact></surface></collision>"
+                "<collision name='b'><geometry><sphere><radius>1</radius></sphere></geometry></collision>"
+                "<collision name='c'><geometry><sphere><radius>1</radius></sphere></geometry><surface><contact><ode>"
+                "<max_vel>-1</max_vel></ode></contact></surface></collision></link></model>"),
+      "mem.world", "", r);
+  EXPECT_DOUBLE_EQ(w.physics.contact_max_correcting_vel, 5);
+  EXPECT_DOUBLE_EQ(w.physics.contact_surface_layer, 0.002);
+  const std::vector<CollisionShape>& c = model(w, "m").model.links.at(0).collisions;
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_DOUBLE_EQ(c[0].surface.max_vel, 0.1);
+  EXPECT_DOUBLE_EQ(c[0].surface.min_depth, 0.003);
+  EXPECT_DOUBLE_EQ(c[1].surface.max_vel, 0.01);  // SDF's defaults
+  EXPECT_DOUBLE_EQ(c[1].surface.min_depth, 0.0);
+  EXPECT_DOUBLE_EQ(c[2].surface.max_vel, -1);  // Gazebo's "only the world's limit"
+
+  const auto physics = [&](const std::string& p) { return parseWorldString(worldWith(p), "mem.world", "", r).physics; };
+  EXPECT_DOUBLE_EQ(physics("").contact_max_correcting_vel, 100);  // SDF's defaults
+  EXPECT_DOUBLE_EQ(physics("").contact_surface_layer, 0.001);
+  // From the engine in use: Bullet's block has a surface layer and no correcting velocity.
+  const PhysicsSettings bullet = physics(
+      "<physics type='bullet'><bullet><constraints><contact_surface_layer>0.004</contact_surface_layer>"
+      "</constraints></bullet><ode><constraints><contact_surface_layer>0.5</contact_surface_layer>"
+      "<contact_max_correcting_vel>3</contact_max_correcting_vel></constraints></ode></physics>");
+  EXPECT_DOUBLE_EQ(bullet.contact_surface_layer, 0.004);
+  EXPECT_DOUBLE_EQ(bullet.contact_max_correcting_vel, 100);
+}
+
 TEST(SdfWorldParser, EmptyWorldUsesBuiltInModels) {
   const ResourceResolver nothing;  // ground_plane and sun need no file on disk
   const WorldDescription w = parseWorldFile(kData + "/../../../bullet_sim/worlds/empty.world", nothing);
@@ -399,6 +435,29 @@ TEST(SdfWorldParserErrors, MoreCases) {
   expectMentions(worldError("<include><uri>model://test_box</uri></include><include><uri>model://test_box</uri></include>"),
                  {"a model named 'test_box' is already in the world"});
   expectMentions(worldError("<include><name>x</name></include>"), {"<include>: missing required element <uri>"});
+}
+
+TEST(SdfWorldParserErrors, ContactCorrectionValues) {
+  const ResourceResolver r;
+  auto worldError = [&](const std::string& body) {
+    return errorOf([&] { parseWorldString(worldWith(body), "mem.world", "", r); });
+  };
+  auto surface = [](const std::string& ode) {
+    return "<model name='m'><link name='l'><collision name='c'><geometry><sphere><radius>1</radius></sphere>"
+           "</geometry><surface><contact><ode>" + ode + "</ode></contact></surface></collision></link></model>";
+  };
+  expectMentions(worldError(surface("<min_depth>-0.001</min_depth>")),
+                 {"mem.world: <world name='w'>/<model name='m'>/<link name='l'>/<collision name='c'>/<surface>/"
+                  "<contact>/<ode>/<min_depth>: expected a number >= 0, got '-0.001'"});
+  expectMentions(worldError(surface("<max_vel>fast</max_vel>")),
+                 {"<collision name='c'>/<surface>/<contact>/<ode>/<max_vel>: expected a number, got 'fast'"});
+  expectMentions(worldError(surface("<max_vel>nan</max_vel>")), {"<ode>/<max_vel>: expected a number, got 'nan'"});
+  expectMentions(worldError("<physics><ode><constraints><contact_max_correcting_vel>-1</contact_max_correcting_vel>"
+                            "</constraints></ode></physics>"),
+                 {"<physics>/<ode>/<constraints>/<contact_max_correcting_vel>: expected a number >= 0, got '-1'"});
+  expectMentions(worldError("<physics><ode><constraints><contact_surface_layer>1mm</contact_surface_layer>"
+                            "</constraints></ode></physics>"),
+                 {"<physics>/<ode>/<constraints>/<contact_surface_layer>: expected a number >= 0, got '1mm'"});
 }
 
 TEST(SdfWorldParserErrors, IncludedModelErrorsNameBothFiles) {

@@ -123,6 +123,38 @@ TEST(UrdfParser, BadFrictionValueIsNamed) {
   EXPECT_NE(e.find("<gazebo reference='upper'>/<mu1>: expected a number >= 0, got 'lots'"), std::string::npos) << e;
 }
 
+// Gazebo's URDF importer writes <maxVel> and <minDepth> into every collision of the link as
+// <surface><contact><ode> max_vel and min_depth; without them, SDF's defaults.
+TEST(UrdfParser, MaxVelAndMinDepthSetEveryCollisionOfTheirLink) {
+  const std::string two_collisions =
+      replace(kArm, "<collision><origin xyz=\"0 0 0.25\"/>",
+              "<collision><geometry><sphere radius=\"0.05\"/></geometry></collision><collision><origin xyz=\"0 0 0.25\"/>");
+  const auto model = parseUrdf(replace(two_collisions, "<mu1>0.5</mu1>", "<maxVel>0.2</maxVel><minDepth>0.001</minDepth><mu1>0.5</mu1>"),
+                               "arm.urdf", ResourceResolver());
+  const auto* upper = model.findLink("upper");
+  ASSERT_TRUE(upper);
+  ASSERT_EQ(upper->collisions.size(), 2u);
+  for (const auto& c : upper->collisions) {
+    EXPECT_DOUBLE_EQ(c.surface.max_vel, 0.2);
+    EXPECT_DOUBLE_EQ(c.surface.min_depth, 0.001);
+  }
+  const auto& base = model.findLink("base")->collisions.at(0).surface;
+  EXPECT_DOUBLE_EQ(base.max_vel, 0.01);
+  EXPECT_DOUBLE_EQ(base.min_depth, 0.0);
+  // A negative maxVel leaves only the world's limit, as in Gazebo.
+  const auto any = parseUrdf(replace(kArm, "<mu1>0.5</mu1>", "<maxVel>-1</maxVel>"), "arm.urdf", ResourceResolver());
+  EXPECT_DOUBLE_EQ(any.findLink("upper")->collisions.at(0).surface.max_vel, -1);
+}
+
+TEST(UrdfParser, BadMaxVelOrMinDepthIsNamed) {
+  std::string e = errorOf(replace(kArm, "<mu1>0.5</mu1>", "<maxVel>slow</maxVel>"));
+  EXPECT_NE(e.find("arm.urdf: <gazebo reference='upper'>/<maxVel>: expected a number, got 'slow'"), std::string::npos) << e;
+  e = errorOf(replace(kArm, "<mu1>0.5</mu1>", "<minDepth>-0.01</minDepth>"));
+  EXPECT_NE(e.find("<gazebo reference='upper'>/<minDepth>: expected a number >= 0, got '-0.01'"), std::string::npos) << e;
+  e = errorOf(replace(kArm, "<mu1>0.5</mu1>", "<maxVel>inf</maxVel>"));
+  EXPECT_NE(e.find("<gazebo reference='upper'>/<maxVel>: expected a number, got 'inf'"), std::string::npos) << e;
+}
+
 TEST(UrdfParser, NegativeMassIsNamed) {
   const std::string e = errorOf(replace(kArm, "<mass value=\"0.2\"/>", "<mass value=\"-1\"/>"));
   EXPECT_NE(e.find("<link name='hand'>/<inertial>/<mass>: expected a mass >= 0"), std::string::npos) << e;

@@ -24,10 +24,19 @@ struct Geometry {
   Eigen::Vector3d mesh_scale = Eigen::Vector3d::Ones();
 };
 
+// How a collision's contacts push overlapping bodies apart: SDF's <surface><contact><ode> <max_vel>
+// and <min_depth> (URDF: <gazebo reference="link"> <maxVel>, <minDepth>), with SDF's defaults and
+// Gazebo's meaning (docs/SIMULATOR.md, "Interpenetration"; contact_solver.cpp).
+struct ContactSurface {
+  double max_vel = 0.01;   // m/s, the fastest its contacts correct an overlap; < 0: only the world's limit
+  double min_depth = 0.0;  // m, >= 0: the overlap its contacts leave uncorrected
+};
+
 struct CollisionShape {
   std::string name;
   Eigen::Isometry3d origin = Eigen::Isometry3d::Identity();  // in the link frame
   Geometry geometry;
+  ContactSurface surface;
 };
 
 struct VisualShape {
@@ -150,6 +159,12 @@ struct PhysicsSettings {
   // Where the rows start from the last step's impulses (contact_solver.h), the sweeps stop once
   // one changes no constraint's velocity by more than this, m/s or rad/s. 0: every sweep runs.
   double solver_tolerance = 1e-5;
+  // <physics><ode><constraints>: no contact corrects an overlap faster than this (m/s), whatever its
+  // surfaces' max_vel; and the depth a contact may sink before it is corrected (m), which, as in
+  // Gazebo, only a contact between bodies without surfaces of their own would use: every link's
+  // collisions carry a min_depth (0 by default) that takes its place, so it has no effect on models.
+  double contact_max_correcting_vel = 100.0;
+  double contact_surface_layer = 0.001;
 };
 
 struct PlacedModel {

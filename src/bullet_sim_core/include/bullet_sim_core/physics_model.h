@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bullet_sim_core/collision_shapes.h"
+#include "bullet_sim_core/contact_solver.h"
 #include "bullet_sim_core/model_description.h"
 
 class btMultiBodyDynamicsWorld;
@@ -107,6 +108,7 @@ class PhysicsModel {
   std::vector<double> pending_effort_, applied_effort_;
   std::unique_ptr<btMultiBody> multibody_;
   std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders_;
+  std::vector<std::unique_ptr<ColliderSurfaces>> collider_surfaces_;  // each collider's user pointer
   struct StaticPart {  // one collision shape of a static model
     std::unique_ptr<btCollisionObject> object;
     Eigen::Isometry3d in_model = Eigen::Isometry3d::Identity();

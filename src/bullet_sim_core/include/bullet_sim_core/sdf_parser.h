@@ -5,12 +5,14 @@
 //
 // What is supported, and how SDF maps onto ModelDescription:
 //  - <world>: name, <physics> (max_step_size, real_time_factor, real_time_update_rate,
-//    gravity), <gravity>, <model>, <include> (uri, name, pose, static). Lights, scene, gui,
-//    state and other world elements are ignored.
+//    gravity, the engine's <solver><iters> and <constraints> contact_max_correcting_vel and
+//    contact_surface_layer), <gravity>, <model>, <include> (uri, name, pose, static). Lights,
+//    scene, gui, state and other world elements are ignored.
 //  - model://ground_plane and model://sun are built in (sun is a light and yields no model).
 //  - <model>: <static>, <pose>, <link>s, <joint>s, <plugin>s. Each link keeps its own frame (its
 //    <pose> in the model frame); collisions, visuals, the inertial and sensors are in the link
-//    frame, as in SDF. Nested models are refused.
+//    frame, as in SDF; a collision's <surface><contact><ode> max_vel and min_depth are kept with
+//    it, its <surface><friction><ode> mu and mu2 with its link. Nested models are refused.
 //  - <joint type="revolute|continuous|prismatic|fixed"> with <parent>, <child> (a link, or "world"
 //    as parent, which fixes the model to the world), <pose> (the joint frame in the child link
 //    frame: its origin is the point the joint turns about), <axis><xyz> (in the joint frame; in
