@@ -51,7 +51,7 @@ ROBOTS = {
                     inscribed=0.12, outline=(0.26, 0.22, 0.0), laser_range=6.0, rtf=30.0, timeout=600.0,
                     mapper='hector'),
     'pioneer': dict(launch=['pioneer_2dnav', 'explore.launch'], model='pioneer',
-                    walls=os.path.join(ROOT, 'src', 'pioneer_gazebo', 'config', 'pioneer_maze_walls.yaml'),
+                    walls=os.path.join(ROOT, 'src', 'pioneer_gazebo_ros', 'pioneer_gazebo', 'config', 'pioneer_maze_walls.yaml'),
                     inscribed=0.2, outline=(0.44, 0.38, -0.045), laser_range=30.0, rtf=22.0, timeout=1500.0,
                     mapper='gmapping'),
 }

@@ -59,7 +59,7 @@ ROBOTS = {
                     spawn=(0.0, 0.0, 0.0), outline=(0.26, 0.22, 0.0), inscribed=0.12, max_vel=0.3,
                     goal_clearance=0.25, xy_tolerance=0.15, rtf=20.0),
     'pioneer': dict(launch=['pioneer_2dnav', 'pioneer_navigation.launch'], model='pioneer',
-                    walls=os.path.join(ROOT, 'src', 'pioneer_gazebo', 'config', 'pioneer_maze_walls.yaml'),
+                    walls=os.path.join(ROOT, 'src', 'pioneer_gazebo_ros', 'pioneer_gazebo', 'config', 'pioneer_maze_walls.yaml'),
                     spawn=(-3.2, -3.2, 0.0), outline=(0.44, 0.38, -0.045), inscribed=0.22, max_vel=0.5,
                     goal_clearance=0.42, xy_tolerance=0.2, rtf=10.0),
 }

@@ -31,7 +31,7 @@ std::string rootElementName(const std::string& xml) {
 
 }  // namespace
 
-GazeboRosApi::GazeboRosApi(Simulator& sim) : sim_(sim), node_("/gazebo") {
+GazeboRosApi::GazeboRosApi(Simulator& sim) : sim_(sim), node_("/gazebo"), reconfigure_(sim) {
   auto& n = node_;
   services_ = {
       n.advertiseService("spawn_urdf_model", &GazeboRosApi::spawnUrdf, this),
@@ -389,8 +389,8 @@ bool GazeboRosApi::getPhysicsProperties(gazebo_msgs::GetPhysicsProperties::Reque
   res.ode_config.sor_pgs_iters = s.solver_iterations;
   res.ode_config.sor_pgs_w = info.m_sor;
   res.ode_config.sor_pgs_rms_error_tol = s.solver_tolerance;  // m/s a sweep must change (contact_solver.h)
-  res.ode_config.contact_surface_layer = info.m_linearSlop;
-  res.ode_config.contact_max_correcting_vel = 100.0;
+  res.ode_config.contact_surface_layer = s.contact_surface_layer;
+  res.ode_config.contact_max_correcting_vel = s.contact_max_correcting_vel;
   res.ode_config.cfm = info.m_globalCfm;
   res.ode_config.erp = info.m_erp;
   res.ode_config.max_contacts = 20;
@@ -408,6 +408,9 @@ bool GazeboRosApi::setPhysicsProperties(gazebo_msgs::SetPhysicsProperties::Reque
   // 0 leaves these as they are, so that a request built from zeros only sets what it names.
   if (req.ode_config.sor_pgs_iters > 0) s.solver_iterations = static_cast<int>(req.ode_config.sor_pgs_iters);
   if (req.ode_config.sor_pgs_rms_error_tol > 0) s.solver_tolerance = req.ode_config.sor_pgs_rms_error_tol;
+  if (req.ode_config.contact_surface_layer > 0) s.contact_surface_layer = req.ode_config.contact_surface_layer;
+  if (req.ode_config.contact_max_correcting_vel > 0)
+    s.contact_max_correcting_vel = req.ode_config.contact_max_correcting_vel;
   try {
     sim_.physics().setSettings(s);
   } catch (const DescriptionError& e) {
@@ -416,6 +419,7 @@ bool GazeboRosApi::setPhysicsProperties(gazebo_msgs::SetPhysicsProperties::Reque
     return true;
   }
   sim_.setPaused(sim_.paused());  // restart real-time tracking at the new rate
+  reconfigure_.publishUpdate();
   res.success = true;
   res.status_message = "SetPhysicsProperties: physics properties set";
   return true;

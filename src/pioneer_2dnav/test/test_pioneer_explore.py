@@ -6,11 +6,12 @@ up with the walls."""
 import os
 import unittest
 
+import rospkg
 import rostest
 
 from bullet_sim_testing.exploration_checks import ExplorationChecks
 
-PIONEER_SIM = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'pioneer_gazebo')
+PIONEER_SIM = rospkg.RosPack().get_path('pioneer_gazebo')
 
 
 class PioneerExploreTest(ExplorationChecks, unittest.TestCase):

@@ -14,6 +14,7 @@ import math
 import os
 import unittest
 
+import rospkg
 import rospy
 import rostest
 from actionlib_msgs.msg import GoalStatus
@@ -27,7 +28,7 @@ from bullet_sim_testing.gazebo import set_real_time_factor
 from bullet_sim_testing.navigation import NavigationChecks
 from bullet_sim_testing.walls import Wall
 
-PIONEER_SIM = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'pioneer_gazebo')
+PIONEER_SIM = rospkg.RosPack().get_path('pioneer_gazebo')
 STALE = 'Sensor data is out of date'
 RTF = 4.0  # the simulation's pace (the navigation benchmark runs the Pioneer at 5x)
 PLANNER_PATIENCE = 5.0  # s: move_base's default, spent before each of the four recoveries and the abort

@@ -25,6 +25,7 @@
 #include <Eigen/Geometry>
 #include <vector>
 
+#include "bullet_sim/physics_reconfigure.h"
 #include "bullet_sim/simulator.h"
 #include "bullet_sim_plugins/counted_publisher.h"
 
@@ -90,6 +91,7 @@ class GazeboRosApi {
   ros::WallTime last_states_wall_;
   std::vector<TimedJointEffort> joint_efforts_;
   std::vector<TimedWrench> wrenches_;
+  PhysicsReconfigure reconfigure_;  // the same physics through dynamic_reconfigure
 };
 
 }  // namespace bullet_sim

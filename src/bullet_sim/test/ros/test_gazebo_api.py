@@ -9,7 +9,8 @@ import unittest
 
 import rospy
 import rostest
-from gazebo_msgs.msg import ModelStates
+import dynamic_reconfigure.client
+from gazebo_msgs.msg import LinkState, ModelStates
 from geometry_msgs.msg import Point, Wrench
 from rosgraph_msgs.msg import Clock
 from visualization_msgs.msg import Marker, MarkerArray
@@ -103,6 +104,54 @@ class GazeboApiTest(unittest.TestCase):
         self.assertAlmostEqual(relative.pose.position.x, 0.5, places=9)
         self.assertTrue(self.gz.set_state('box', pose(0, 1, 0), reference='marker').success)
         self.assertAlmostEqual(self.gz.state('box').pose.position.y, 1.0, places=9)
+
+    def test_set_link_state_places_a_model_by_its_root_link_and_refuses_a_jointed_link(self):
+        self.assertTrue(self.gz.spawn_urdf('pendulum', PENDULUM, pose(0, 0, 0)).success)
+        root = self.gz.get_model_properties(model_name='pendulum').body_names[0]
+        target = LinkState(link_name='pendulum::' + root, pose=pose(0.5, -0.25, 0.75, yaw=0.3))
+        done = self.gz.set_link_state(link_state=target)
+        self.assertTrue(done.success, done.status_message)
+        got = self.gz.get_link_state(link_name='pendulum::' + root, reference_frame='world').link_state.pose
+        self.assertAlmostEqual(got.position.x, 0.5, places=9)
+        self.assertAlmostEqual(got.position.y, -0.25, places=9)
+        self.assertAlmostEqual(got.position.z, 0.75, places=9)
+        self.assertAlmostEqual(got.orientation.z, target.pose.orientation.z, places=9)
+        # The topic does the same.
+        publisher = rospy.Publisher('/gazebo/set_link_state', LinkState, queue_size=1, latch=True)
+        publisher.publish(LinkState(link_name='pendulum::' + root, pose=pose(-1.0, 0, 0.5)))
+        deadline = time.monotonic() + 5
+        while self.gz.state('pendulum').pose.position.x > -0.99 and time.monotonic() < deadline:
+            time.sleep(0.05)
+        self.assertAlmostEqual(self.gz.get_link_state(link_name='pendulum::' + root).link_state.pose.position.x,
+                               -1.0, places=9)
+        # A link on a joint cannot be placed on its own in reduced coordinates: it says so.
+        child = self.gz.get_model_properties(model_name='pendulum').body_names[1]
+        self.assertRejected(self.gz.set_link_state(link_state=LinkState(link_name='pendulum::' + child, pose=pose(0, 0, 2))),
+                            'hangs on joints', 'set_model_configuration')
+        self.assertRejected(self.gz.set_link_state(link_state=LinkState(link_name='nothing::here', pose=pose())),
+                            'link [nothing::here] does not exist')
+
+    def test_dynamic_reconfigure_reads_and_sets_the_physics(self):
+        client = dynamic_reconfigure.client.Client('/gazebo', timeout=10)
+        config = client.get_configuration(timeout=10)
+        physics = self.gz.get_physics_properties()
+        self.assertAlmostEqual(config['time_step'], physics.time_step, places=12)
+        self.assertAlmostEqual(config['gravity_z'], -9.8, places=9)
+        self.assertAlmostEqual(config['contact_max_correcting_vel'], physics.ode_config.contact_max_correcting_vel)
+        self.assertEqual(config['sor_pgs_iters'], physics.ode_config.sor_pgs_iters)
+        try:
+            changed = client.update_configuration({'time_step': 0.002, 'gravity_z': -1.62, 'sor_pgs_iters': 30})
+            self.assertAlmostEqual(changed['time_step'], 0.002, places=12)
+            now = self.gz.get_physics_properties()
+            self.assertAlmostEqual(now.time_step, 0.002, places=12)
+            self.assertAlmostEqual(now.gravity.z, -1.62, places=12)
+            self.assertEqual(now.ode_config.sor_pgs_iters, 30)
+            # Values outside upstream's ranges are clamped, as dynamic_reconfigure's servers do.
+            self.assertEqual(client.update_configuration({'gravity_z': -500.0})['gravity_z'], -100.0)
+        finally:
+            client.update_configuration({'time_step': physics.time_step, 'gravity_z': physics.gravity.z,
+                                         'sor_pgs_iters': physics.ode_config.sor_pgs_iters})
+        self.assertAlmostEqual(self.gz.get_physics_properties().time_step, physics.time_step, places=12)
 
     def test_pause_stops_clock_and_motion_and_unpause_resumes(self):
         self.assertTrue(self.gz.spawn_urdf('box', BOX, pose(0, 0, 50)).success)

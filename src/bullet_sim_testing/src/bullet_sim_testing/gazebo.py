@@ -5,8 +5,8 @@ import time
 import rospy
 from gazebo_msgs.msg import ModelState
 from gazebo_msgs.srv import (ApplyBodyWrench, ApplyJointEffort, DeleteModel, GetJointProperties, GetLinkState,
-                             GetModelState, GetPhysicsProperties, GetWorldProperties, SetModelConfiguration,
-                             SetModelState, SetPhysicsProperties, SpawnModel)
+                             GetModelProperties, GetModelState, GetPhysicsProperties, GetWorldProperties,
+                             SetLinkState, SetModelConfiguration, SetModelState, SetPhysicsProperties, SpawnModel)
 from geometry_msgs.msg import Pose
 from std_srvs.srv import Empty
 
@@ -29,7 +29,8 @@ class Gazebo:
         'get_world_properties': GetWorldProperties, 'get_physics_properties': GetPhysicsProperties,
         'set_physics_properties': SetPhysicsProperties, 'apply_joint_effort': ApplyJointEffort,
         'apply_body_wrench': ApplyBodyWrench, 'set_model_configuration': SetModelConfiguration,
-        'get_joint_properties': GetJointProperties, 'pause_physics': Empty, 'unpause_physics': Empty,
+        'get_joint_properties': GetJointProperties, 'get_model_properties': GetModelProperties,
+        'set_link_state': SetLinkState, 'pause_physics': Empty, 'unpause_physics': Empty,
         'reset_world': Empty, 'reset_simulation': Empty,
     }
 

@@ -135,9 +135,12 @@ class UserSession:
         self.cwd = self.home
         self.id = '%s-%s' % (name, uuid.uuid4().hex[:8])
         self.terminals = []
+        self.last_stderr = ''
         with open(os.path.join(self.home, '.bashrc'), 'w') as f:
             # The tutorials' ROS installation step ("source /opt/ros/<distro>/setup.bash"): here, this workspace.
             f.write('source %s/devel/setup.bash\n' % WORKSPACE)
+            # Debian's interactive shells load bash-completion, where Debian's rosbash defines roscd and rosls.
+            f.write('source /usr/share/bash-completion/completions/rosbash\n')
         self.env = {
             'HOME': self.home, 'USER': os.environ.get('USER', 'root'), 'LANG': 'C.UTF-8', 'TERM': 'dumb',
             'PATH': '/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin',
@@ -184,17 +187,19 @@ class UserSession:
 
     def run(self, lines, timeout=300.0, check=True):
         """Types the lines into a terminal, one after another, and waits for the last; fails at the
-        first line that fails (unless check=False). Returns (status, output)."""
+        first line that fails (unless check=False). Returns (status, what they printed on stdout);
+        their stderr (ROS's tools warn there, e.g. of rosdep's missing cache) is in last_stderr."""
         state = os.path.join(self.logs, 'cwd-%d' % len(os.listdir(self.logs)))
         process = subprocess.run(['bash', '-c', self._script(lines, state)], env=self.env, cwd=self.home,
-                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=timeout,
+                                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=timeout,
                                  start_new_session=True)
+        self.last_stderr = process.stderr
         if process.returncode == 0 and os.path.exists(state):
             with open(state) as f:
                 self.cwd = f.read().strip()
         if check and process.returncode != 0:
-            raise CommandFailed('these lines failed (status %d):\n%s\noutput:\n%s'
-                                % (process.returncode, lines.strip(), tail(process.stdout)))
+            raise CommandFailed('these lines failed (status %d):\n%s\noutput:\n%s\n%s'
+                                % (process.returncode, lines.strip(), tail(process.stdout), tail(process.stderr)))
         return process.returncode, process.stdout
 
     def start(self, lines, cwd=None):
