@@ -132,7 +132,8 @@ def main():
             test = os.path.splitext(os.path.basename(walkthrough))[0]
             xml = os.path.join(RESULTS, "walkthrough", test + ".xml")
             suites.append(("walkthrough %s" % test,
-                           [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "--junitxml=" + xml,
+                           # -x: a walkthrough's steps build on each other; after a failed one the rest says nothing
+                           [sys.executable, "-m", "pytest", "-q", "-x", "-p", "no:cacheprovider", "--junitxml=" + xml,
                             walkthrough], xml))
 
     totals = [0, 0, 0]

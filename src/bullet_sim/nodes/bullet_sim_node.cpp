@@ -86,6 +86,15 @@ std::string findWorldFile(const std::string& name) {
   return name;
 }
 
+// Gazebo makes ~/.gazebo/models, its local model folder, the first time it runs; tutorials then
+// copy models into it (`cp -r Capstone_Map ~/.gazebo/models`).
+void makeLocalModelFolder() {
+  const char* home = std::getenv("HOME");
+  if (!home || !*home) return;
+  std::error_code ignored;  // a read-only home only means there is no local model folder
+  std::filesystem::create_directories(std::filesystem::path(home) / ".gazebo" / "models", ignored);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -115,6 +124,7 @@ int main(int argc, char** argv) {
   // A node started alone still gives sim time to everyone who asks for it.
   if (!ros::param::has("/use_sim_time")) ros::param::set("/use_sim_time", true);
 
+  makeLocalModelFolder();
   const bullet_sim::ResourceResolver resolver = bullet_sim::ResourceResolver::fromEnvironment();
   bullet_sim::WorldDescription world;
   std::string world_file = findWorldFile(arguments.world_file);

@@ -55,8 +55,8 @@ def test_the_katana_blog_post(user):
     arm.wait_for(r'Started controllers: .*joint_state_controller', timeout=120)
     # (The post's last reader could not load joint_state_controller; here it runs.)
     listed = call(user, '/controller_manager/list_controllers')['controller']
-    assert {c['name']: c['state'] for c in listed} >= {'joint_state_controller': 'running',
-                                                       'katana_arm_controller': 'running'}
+    states = {c['name']: c['state'] for c in listed}
+    assert states['joint_state_controller'] == 'running' and states['katana_arm_controller'] == 'running'
     assert 'katana' in call(user, '/gazebo/get_world_properties')['model_names']
 
     # "fill in forces ... per joint": an effort on the base joint against its controller turns it.
@@ -91,7 +91,7 @@ def test_the_katana_blog_post(user):
     done = program.wait_for(r'stack_cans: stacked (\d+) of (\d+) cans on the tower \((\d+) high\)', timeout=400)
     assert done.groups() == ('2', '2', '3')
     heights = sorted(call(user, '/gazebo/get_model_state', '{model_name: can_%d}' % i)['pose']['position']['z']
-                     for i in range(3))
+                     for i in range(1, 4))
     # Three cans of 0.12 m one on another on the 0.4 m table: their centres 0.12 m apart.
     assert heights[1] - heights[0] == pytest.approx(0.12, abs=0.01)
     assert heights[2] - heights[1] == pytest.approx(0.12, abs=0.01)
