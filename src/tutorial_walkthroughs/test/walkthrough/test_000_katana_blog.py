@@ -85,6 +85,7 @@ def test_the_katana_blog_post(user):
 
     # The control program: find the cans in the scan, the triangle IK, trajectories through via
     # points, and the grasp fix holding each can: katana_pick's stack_cans.
+    user.speed_up(5)
     program = user.start('rosrun katana_pick stack_cans')
     found = program.wait_for(r'stack_cans: (\d+) cans: ', timeout=120)
     assert int(found.group(1)) == 3

@@ -215,6 +215,7 @@ def test_3_hector_slam(user):
 
 def test_4_frontier_exploration(user):
     # "Run example": the world, then nav_run.launch (hector mapping, move_base, find_frontier).
+    user.speed_up(5)
     nav = user.start('roslaunch find_frontier nav_run.launch')
     nav.wait_for(r'find_frontier', timeout=60)
     status = user.start('rostopic echo /find_frontier/status')

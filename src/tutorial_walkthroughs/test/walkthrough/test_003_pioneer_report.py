@@ -99,13 +99,12 @@ def test_the_pioneer_report(user):
     assert float(user.run('rosparam get /pioneer_ros/controller_gains/body/linear/p')[1]) == pytest.approx(0.5)
 
     # A "2D Nav Goal" clicked in rviz: the pose it publishes on /move_base_simple/goal.
+    user.speed_up(3)
     mapped_before = known_cells(user)
     start = model_pose(user, 'pioneer')
     assert math.hypot(GOAL[0] - start[0], GOAL[1] - start[1]) == pytest.approx(2.2, abs=0.05)
     user.run("rostopic pub -1 /move_base_simple/goal geometry_msgs/PoseStamped "
              "'{header: {frame_id: map}, pose: {position: {x: %g, y: %g}, orientation: {w: 1.0}}}'" % GOAL)
-    drive_commands = echo_once(user, '/pioneer/cmd_vel')
-    assert 0.0 < drive_commands['linear']['x'] <= 1.0  # the controller drives the robot forward, within its limit
     reached = poll(lambda: (lambda p: math.hypot(p[0] - GOAL[0], p[1] - GOAL[1]) < 0.25 and p)(model_pose(user, 'pioneer')),
                    120, period=1.0, what='the Pioneer reaching the goal 2.2 m away')
     assert abs(reached[1] - GOAL[1]) < 0.3, 'it kept to the corridor'
