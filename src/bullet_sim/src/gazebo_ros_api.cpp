@@ -216,22 +216,33 @@ bool GazeboRosApi::applyModelState(const gazebo_msgs::ModelState& state, std::st
     status = "SetModelState: model [" + state.model_name + "] does not exist";
     return false;
   }
-  Eigen::Isometry3d pose, reference;
-  if (!toPose(state.pose, "SetModelState: model_state.pose", pose, status)) return false;
-  if (!isFinite(state.twist)) {
-    status = "SetModelState: model_state.twist: expected finite numbers";
+  Eigen::Isometry3d pose;
+  Twist twist;
+  if (!worldState(state.pose, state.twist, state.reference_frame, "SetModelState: model_state", pose, twist, status))
     return false;
-  }
-  if (!entityPose(state.reference_frame, reference)) {
-    status = "SetModelState: specified reference frame entity [" + state.reference_frame + "] does not exist";
-    return false;
-  }
-  model->setPose(reference * pose);
-  Twist twist = toTwist(state.twist);
-  twist.linear = reference.linear() * twist.linear;
-  twist.angular = reference.linear() * twist.angular;
+  model->setPose(pose);
   model->setTwist(twist);
   status = "SetModelState: set model state done";
+  return true;
+}
+
+bool GazeboRosApi::worldState(const geometry_msgs::Pose& pose_msg, const geometry_msgs::Twist& twist_msg,
+                              const std::string& reference_frame, const std::string& what, Eigen::Isometry3d& pose,
+                              Twist& twist, std::string& status) const {
+  Eigen::Isometry3d reference;
+  if (!toPose(pose_msg, what + ".pose", pose, status)) return false;
+  if (!isFinite(twist_msg)) {
+    status = what + ".twist: expected finite numbers";
+    return false;
+  }
+  if (!entityPose(reference_frame, reference)) {
+    status = what + ": specified reference frame entity [" + reference_frame + "] does not exist";
+    return false;
+  }
+  pose = reference * pose;
+  twist = toTwist(twist_msg);
+  twist.linear = reference.linear() * twist.linear;
+  twist.angular = reference.linear() * twist.angular;
   return true;
 }
 
@@ -286,25 +297,15 @@ bool GazeboRosApi::applyLinkState(const gazebo_msgs::LinkState& state, std::stri
              "]: set the root link's state to move the model, or the joints with set_model_configuration";
     return false;
   }
-  Eigen::Isometry3d pose, reference;
-  if (!toPose(state.pose, "SetLinkState: link_state.pose", pose, status)) return false;
-  if (!isFinite(state.twist)) {
-    status = "SetLinkState: link_state.twist: expected finite numbers";
+  Eigen::Isometry3d link_pose;
+  Twist twist;
+  if (!worldState(state.pose, state.twist, state.reference_frame, "SetLinkState: link_state", link_pose, twist, status))
     return false;
-  }
-  if (!entityPose(state.reference_frame, reference)) {
-    status = "SetLinkState: reference_frame [" + state.reference_frame + "] does not exist";
-    return false;
-  }
   // The model's frame sits where it sits relative to its root link; the twist asked for is the
   // link origin's, the model's is its frame origin's.
   const Eigen::Isometry3d link_to_model = model->linkPose(link).inverse() * model->pose();
-  const Eigen::Isometry3d link_pose = reference * pose;
   model->setPose(link_pose * link_to_model);
-  Twist twist = toTwist(state.twist);
-  twist.angular = reference.linear() * twist.angular;
-  twist.linear = reference.linear() * twist.linear +
-                 twist.angular.cross(model->pose().translation() - link_pose.translation());
+  twist.linear += twist.angular.cross(model->pose().translation() - link_pose.translation());
   model->setTwist(twist);
   status = "SetLinkState: success";
   return true;

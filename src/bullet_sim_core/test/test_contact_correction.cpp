@@ -12,6 +12,7 @@
 #include "bullet_sim_core/description_error.h"
 #include "bullet_sim_core/physics_world.h"
 #include "bullet_sim_core/urdf_parser.h"
+#include "ground_plane.h"
 
 using namespace bullet_sim;
 
@@ -29,17 +30,6 @@ constexpr double kRateTolerance = 2e-5;  // m/s
 constexpr int kSettling = 10;
 
 ModelDescription parse(const std::string& xml) { return parseUrdf(xml, "test.urdf", ResourceResolver()); }
-
-ModelDescription groundPlane() {
-  ModelDescription ground;
-  ground.name = "ground_plane";
-  ground.is_static = true;
-  ground.links.emplace_back();
-  ground.links[0].name = "link";
-  ground.links[0].collisions.emplace_back();
-  ground.links[0].collisions[0].geometry.type = GeometryType::Plane;
-  return ground;
-}
 
 // A 0.2 m cube of 1 kg; `gazebo` goes into a <gazebo reference="body"> block.
 std::string boxUrdf(const std::string& name, const std::string& gazebo = "") {

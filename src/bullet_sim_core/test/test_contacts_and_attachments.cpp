@@ -9,6 +9,7 @@
 #include "bullet_sim_core/description_error.h"
 #include "bullet_sim_core/physics_world.h"
 #include "bullet_sim_core/urdf_parser.h"
+#include "ground_plane.h"
 
 namespace bullet_sim {
 namespace {
@@ -37,17 +38,6 @@ PhysicsSettings earth() {
   PhysicsSettings s;
   s.gravity = Eigen::Vector3d(0, 0, -kG);
   return s;
-}
-
-ModelDescription groundPlane() {
-  ModelDescription ground;
-  ground.name = "ground_plane";
-  ground.is_static = true;
-  ground.links.emplace_back();
-  ground.links[0].name = "link";
-  ground.links[0].collisions.emplace_back();
-  ground.links[0].collisions[0].geometry.type = GeometryType::Plane;
-  return ground;
 }
 
 Eigen::Isometry3d at(double x, double y, double z) {

@@ -12,6 +12,7 @@
 #include "bullet_sim_core/description_error.h"
 #include "bullet_sim_core/physics_world.h"
 #include "bullet_sim_core/urdf_parser.h"
+#include "ground_plane.h"
 
 using namespace bullet_sim;
 
@@ -305,17 +306,6 @@ TEST(PhysicsWorld, RemoveAndResetModels) {
 }
 
 namespace {
-
-ModelDescription groundPlane() {
-  ModelDescription ground;
-  ground.name = "ground_plane";
-  ground.is_static = true;
-  ground.links.emplace_back();
-  ground.links[0].name = "link";
-  ground.links[0].collisions.emplace_back();
-  ground.links[0].collisions[0].geometry.type = GeometryType::Plane;
-  return ground;
-}
 
 std::string meshBoxUrdf(const std::string& name, double scale) {
   const std::string s = std::to_string(scale);

@@ -17,7 +17,9 @@ namespace {
 const std::string kData = BULLET_SIM_TEST_DATA_DIR;
 
 ResourceResolver testResolver() {
-  // Empty entries ("::") must be skipped.
+  // Empty entries ("::") must be skipped. A home without ~/.gazebo/models (the simulator makes one in
+  // the real home, which would join the model path).
+  setenv("HOME", (kData + "/packages").c_str(), 1);
   setenv("ROS_PACKAGE_PATH", (kData + "/packages::" + kData + "/no_such_folder").c_str(), 1);
   setenv("GAZEBO_MODEL_PATH", (kData + "/models:").c_str(), 1);
   return ResourceResolver::fromEnvironment();

@@ -60,6 +60,11 @@ class GazeboRosApi {
   bool getModelState(gazebo_msgs::GetModelState::Request& req, gazebo_msgs::GetModelState::Response& res);
   bool setModelState(gazebo_msgs::SetModelState::Request& req, gazebo_msgs::SetModelState::Response& res);
   bool applyModelState(const gazebo_msgs::ModelState& state, std::string& status);
+  // A state message's pose and twist in the world frame; false, with status naming `what`'s bad
+  // field, if a number is not finite or the reference frame does not exist.
+  bool worldState(const geometry_msgs::Pose& pose_msg, const geometry_msgs::Twist& twist_msg,
+                  const std::string& reference_frame, const std::string& what, Eigen::Isometry3d& pose, Twist& twist,
+                  std::string& status) const;
   void setModelStateTopic(const gazebo_msgs::ModelState::ConstPtr& msg);
   bool getLinkState(gazebo_msgs::GetLinkState::Request& req, gazebo_msgs::GetLinkState::Response& res);
   bool setLinkState(gazebo_msgs::SetLinkState::Request& req, gazebo_msgs::SetLinkState::Response& res);

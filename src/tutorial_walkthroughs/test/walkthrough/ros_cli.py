@@ -1,6 +1,7 @@
 """What a user reads off the ROS command-line tools, typed into a UserSession and parsed."""
 import math
 import re
+import subprocess
 import time
 
 import yaml
@@ -45,13 +46,29 @@ def model_pose(user, model):
     return p['x'], p['y'], p['z'], yaw
 
 
-def poll(check, timeout, period=0.5, what='condition'):
-    """Calls check() until it returns a true value (which is returned); fails after timeout seconds."""
+def wait_until(get, accept, timeout, what, period=0.5):
+    """Calls get() until accept(its value) holds and returns that value; fails after timeout
+    seconds, saying what was awaited and the last value seen."""
     deadline = time.monotonic() + timeout
-    last = None
-    while time.monotonic() < deadline:
-        last = check()
-        if last:
-            return last
+    while True:
+        value = get()
+        if accept(value):
+            return value
+        if time.monotonic() > deadline:
+            raise CommandFailed('%s did not happen within %.0f s (last: %r)' % (what, timeout, value))
         time.sleep(period)
-    raise CommandFailed('%s did not hold within %.0f s (last: %r)' % (what, timeout, last))
+
+
+def poll(check, timeout, period=0.5, what='condition'):
+    """Until check() is true."""
+    wait_until(check, bool, timeout, what, period)
+
+
+def package_dir(name):
+    """`rospack find NAME`: where a package of this workspace is."""
+    return subprocess.check_output(['rospack', 'find', name], text=True).strip()
+
+
+def simulator_running():
+    """Whether a process named gzserver (the simulator, however it was started) runs."""
+    return subprocess.run(['pgrep', '-x', 'gzserver'], stdout=subprocess.DEVNULL).returncode == 0

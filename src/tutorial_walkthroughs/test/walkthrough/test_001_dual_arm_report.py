@@ -12,32 +12,18 @@ report does not show) is arm_gazebo's. Stand-ins (docs/TUTORIALS.md): Gazebo's f
 import os
 import re
 import shutil
-import subprocess
 
 import pytest
 
-from ros_cli import call, echo_once, poll
-from user_session import UserSession
+from ros_cli import call, echo_once, package_dir, wait_until
 
 REPORT_FILES = os.path.join(os.path.dirname(__file__), '..', '..', 'tutorials', '001_dual_arm_report')
 SERVO_MSG = 'string first_name\nstring last_name\nuint8 age\nuint32 score\n'
 
 
-def package_dir(name):
-    return subprocess.check_output(['rospack', 'find', name], text=True).strip()
-
-
 def joint_position(user, joint):
     return call(user, '/gazebo/get_joint_properties', '{joint_name: %s}' % joint)['position'][0]
 
-
-@pytest.fixture
-def user(tmp_path):
-    assert subprocess.run(['pgrep', '-x', 'gzserver'], stdout=subprocess.DEVNULL).returncode != 0, \
-        'a simulator is already running: the walkthrough needs the machine to itself'
-    session = UserSession(tmp_path, 'dual_arm')
-    yield session
-    session.close()
 
 
 def uncomment(text, first_line):
@@ -148,11 +134,15 @@ def test_the_dual_arm_report(user):
     # 2.3.5: the world and the arm, then (2.2.7) forces on a joint, then the controllers.
     world = user.start('roslaunch arm_gazebo arm_world.launch')
     world.wait_for(r'Spawn status: SpawnModel: Successfully spawned entity', timeout=90)
-    before = joint_position(user, 'joint1_1')
-    call(user, '/gazebo/apply_joint_effort', '{joint_name: joint1_1, effort: 5.0, duration: {secs: 1}}')
-    moved = poll(lambda: (lambda q: abs(q - before) > 0.2 and q)(joint_position(user, 'joint1_1')), 20,
-                 what='joint1_1 turning under 5 N m')
-    assert abs(moved - before) < 6.0
+    # The force panel holds a torque on the joint while it is set: 5 N m lifts the arm (joint1_1 carries
+    # arm, elbow and forearm, at most 7.3 N m of gravity held out straight, arm_control.yaml) until
+    # gravity balances it, at asin(5 / 7.3) = 0.75 rad; cleared, the arm hangs down again.
+    call(user, '/gazebo/apply_joint_effort', '{joint_name: joint1_1, effort: 5.0, duration: {secs: -1}}')
+    lifted = wait_until(lambda: (joint_position(user, 'joint1_1'), joint_position(user, 'joint1_1')),
+                        lambda two: abs(two[0] - two[1]) < 0.005 and abs(two[1]) > 0.3, 30, 'the arm lifted and still')[1]
+    assert 0.70 < abs(lifted) < 0.82
+    call(user, '/gazebo/clear_joint_forces', '{joint_name: joint1_1}')
+    wait_until(lambda: joint_position(user, 'joint1_1'), lambda q: abs(q) < 0.05, 30, 'the arm hanging down again')
 
     control = user.start('roslaunch arm_control arm_control.launch')
     names = 'joint1_1_controller, joint1_2_controller, joint2_1_controller, joint2_2_controller, joint3_1_controller'
@@ -172,8 +162,8 @@ def test_the_dual_arm_report(user):
     assert started['ok'] is True
 
     user.run('rostopic pub -1 /arm/joint1_1_controller/command std_msgs/Float64 "data: 1.57"')
-    held = poll(lambda: (lambda s: abs(s['process_value'] - 1.57) < 0.03 and s)(
-        echo_once(user, '/arm/joint1_1_controller/state')), 20, what='joint1_1 at 1.57 rad')
+    held = wait_until(lambda: echo_once(user, '/arm/joint1_1_controller/state'),
+                      lambda s: abs(s['process_value'] - 1.57) < 0.03, 20, 'joint1_1 at 1.57 rad')
     assert held['set_point'] == pytest.approx(1.57) and abs(held['error']) < 0.03
 
     # 2.3.7: the controller's performance, plotted (rqt's Plot; topic_plot here).

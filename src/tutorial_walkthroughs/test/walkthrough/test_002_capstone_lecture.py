@@ -15,15 +15,14 @@ import math
 import os
 import re
 import shutil
-import subprocess
 
 import pytest
 
-from ros_cli import echo_once, model_pose, poll, rate
-from user_session import UserSession
+from ros_cli import call, echo_once, model_pose, package_dir, poll, rate, wait_until
 
 LECTURE_FILES = os.path.join(os.path.dirname(__file__), '..', '..', 'tutorials', '002_capstone_lecture')
 REST_HEIGHT = 0.1  # base_frame above the ground when the wheels (r 0.05, 0.05 below it) stand on it
+SCREEN = True  # the lecture opens rviz
 
 
 def lecture_file(relative):
@@ -31,21 +30,8 @@ def lecture_file(relative):
         return f.read()
 
 
-def package_dir(name):
-    return subprocess.check_output(['rospack', 'find', name], text=True).strip()
-
-
-def simulator_running():
-    return subprocess.run(['pgrep', '-x', 'gzserver'], stdout=subprocess.DEVNULL).returncode == 0
-
-
-@pytest.fixture(scope='module')
-def user(tmp_path_factory):
-    assert not simulator_running(), 'a simulator is already running: the walkthrough needs the machine to itself'
-    session = UserSession(tmp_path_factory.mktemp('capstone'), 'capstone')
-    session.screen()
-    yield session
-    session.close()
+def sim_time(user):
+    return call(user, '/gazebo/get_world_properties')['sim_time']
 
 
 def test_1_nodes_and_topics(user):
@@ -145,9 +131,11 @@ def test_2_the_robot_in_its_world(user):
     world.wait_for(r'Spawn status: SpawnModel: Successfully spawned entity', timeout=90)
     # Spawned without -z, its wheels start 0.1 m inside the ground; the contacts push it out, slowly
     # (Gazebo's max_vel, 0.01 m/s), and it stands on its wheels, level.
+    spawned = sim_time(user)
     heights = []
-    poll(lambda: heights.append(model_pose(user, 'm_robot')[2]) or abs(heights[-1] - REST_HEIGHT) < 0.003, 30,
-         what='m_robot standing on its wheels')
+    wait_until(lambda: heights.append(model_pose(user, 'm_robot')[2]) or heights[-1],
+               lambda z: abs(z - REST_HEIGHT) < 0.003, 30, 'm_robot standing on its wheels')
+    assert sim_time(user) - spawned < 15.0, 'on its wheels within 15 s of sim time'
     assert max(heights) < REST_HEIGHT + 0.05, 'it was not thrown up: %s' % heights
     x, y, z, yaw = model_pose(user, 'm_robot')
     assert abs(x) < 0.02 and abs(y) < 0.02 and abs(yaw) < 0.02
@@ -160,7 +148,8 @@ def test_2_the_robot_in_its_world(user):
                 catkin_make''')
     world = user.start('roslaunch m_robot_gazebo m_robot_world.launch')
     world.wait_for(r'Spawn status: SpawnModel: Successfully spawned entity', timeout=90)
-    poll(lambda: abs(model_pose(user, 'm_robot')[2] - REST_HEIGHT) < 0.003, 30, what='m_robot on its wheels in the maze')
+    wait_until(lambda: model_pose(user, 'm_robot'), lambda p: abs(p[2] - REST_HEIGHT) < 0.003, 30,
+               'm_robot on its wheels in the maze')
 
     # "Check the controllers": teleop_twist_keyboard, driving backwards (','), out of the corner the
     # lecture's start pose puts it in, then any other key stops it.
@@ -168,13 +157,12 @@ def test_2_the_robot_in_its_world(user):
     teleop.wait_for(r'Moving around', timeout=30)
     start = model_pose(user, 'm_robot')
     teleop.send(',')
-    moved = poll(lambda: (lambda p: start[0] - p[0] > 0.2 and p)(model_pose(user, 'm_robot')), 20,
-                 what='m_robot driving 0.2 m backwards')
+    moved = wait_until(lambda: model_pose(user, 'm_robot'), lambda p: start[0] - p[0] > 0.2, 20,
+                       'm_robot driving 0.2 m backwards')
     teleop.send('k')
     assert abs(moved[1] - start[1]) < 0.05 and abs(moved[3] - start[3]) < 0.1, 'it drove straight back'
-    stopped = poll(lambda: (lambda a, b: abs(a[0] - b[0]) < 0.002 and b)(model_pose(user, 'm_robot'),
-                                                                         model_pose(user, 'm_robot')), 10,
-                   what='m_robot stopping')
+    stopped = wait_until(lambda: (model_pose(user, 'm_robot'), model_pose(user, 'm_robot')),
+                         lambda two: abs(two[0][0] - two[1][0]) < 0.002, 10, 'm_robot stopping')[1]
     assert 0.2 < start[0] - stopped[0] < 0.6
     teleop.interrupt()
 
@@ -199,8 +187,8 @@ def test_3_hector_slam(user):
     pose = echo_once(user, '/slam_out_pose', timeout=60)
     assert pose['header']['frame_id'] == 'map'
     # The map, once hector has put the maze walls round the robot in it (it publishes every 2 s).
-    grid = poll(lambda: (lambda g: sum(1 for v in g['data'] if v == 100) > 200 and g)(echo_once(user, '/map')), 60,
-                what="the maze walls in hector's map")
+    grid = wait_until(lambda: echo_once(user, '/map'), lambda g: sum(1 for v in g['data'] if v == 100) > 200, 60,
+                      "the maze walls in hector's map")
     assert grid['info']['resolution'] == pytest.approx(0.05) and grid['info']['width'] == 200
     rviz = user.start('rosrun rviz rviz')
     poll(lambda: '/rviz' in user.run('rosnode list')[1], 60, what='rviz running')

@@ -12,22 +12,16 @@ with rostopic; rviz itself runs on a virtual display.
 import math
 import os
 import re
-import subprocess
 
 import pytest
 
-from ros_cli import echo_once, model_pose, poll
-from user_session import WORKSPACE, UserSession
+from ros_cli import echo_once, model_pose, poll, simulator_running, wait_until
+from user_session import WORKSPACE
 
 GOAL = (-1.0, -3.2)  # 2.2 m east of the start (-3.2, -3.2), along the maze's south corridor
 
 
-@pytest.fixture
-def user(tmp_path):
-    session = UserSession(tmp_path, 'pioneer')
-    session.screen()
-    yield session
-    session.close()
+SCREEN = True  # the tutorial opens rviz
 
 
 def publishers_and_subscribers(user, topic):
@@ -43,8 +37,6 @@ def known_cells(user):
 
 
 def test_the_pioneer_report(user):
-    assert subprocess.run(['pgrep', '-x', 'gzserver'], stdout=subprocess.DEVNULL).returncode != 0, \
-        'a simulator is already running: the walkthrough needs the machine to itself'
 
     # 1.2: Gazebo's environment variables.
     user.run('''echo 'export GAZEBO_MODEL_PATH=~/.gazebo/models:$GAZEBO_MODEL_PATH' >> ~/.bashrc
@@ -54,8 +46,8 @@ def test_the_pioneer_report(user):
     # 1.3: "Check the installation": roscore & rosrun gazebo_ros gazebo, then rostopic list.
     gazebo = user.start('roscore & rosrun gazebo_ros gazebo')
     gazebo.wait_for(r'bullet_sim: world', timeout=60)
-    topics = set(poll(lambda: '/gazebo/model_states' in user.run('rostopic list')[1] and user.run('rostopic list')[1],
-                      30, what='the simulator\'s topics').split())
+    topics = set(wait_until(lambda: user.run('rostopic list')[1].split(), lambda t: '/gazebo/model_states' in t, 30,
+                            "the simulator's topics"))
     assert {'/clock', '/gazebo/link_states', '/gazebo/model_states', '/gazebo/parameter_descriptions',
             '/gazebo/parameter_updates', '/gazebo/set_link_state', '/gazebo/set_model_state',
             '/rosout', '/rosout_agg'} <= topics
@@ -105,8 +97,8 @@ def test_the_pioneer_report(user):
     assert math.hypot(GOAL[0] - start[0], GOAL[1] - start[1]) == pytest.approx(2.2, abs=0.05)
     user.run("rostopic pub -1 /move_base_simple/goal geometry_msgs/PoseStamped "
              "'{header: {frame_id: map}, pose: {position: {x: %g, y: %g}, orientation: {w: 1.0}}}'" % GOAL)
-    reached = poll(lambda: (lambda p: math.hypot(p[0] - GOAL[0], p[1] - GOAL[1]) < 0.25 and p)(model_pose(user, 'pioneer')),
-                   120, period=1.0, what='the Pioneer reaching the goal 2.2 m away')
+    reached = wait_until(lambda: model_pose(user, 'pioneer'), lambda p: math.hypot(p[0] - GOAL[0], p[1] - GOAL[1]) < 0.25,
+                         120, 'the Pioneer reaching the goal 2.2 m away', period=1.0)
     assert abs(reached[1] - GOAL[1]) < 0.3, 'it kept to the corridor'
     assert known_cells(user) > mapped_before, "gmapping's map grew as the robot drove"
 
@@ -128,5 +120,4 @@ def test_the_pioneer_report(user):
     # Ctrl+C: the script's trap stops what it started ("Killing all processes.").
     bringup.interrupt()
     bringup.wait_for(r'Killing all processes\.', timeout=30)
-    poll(lambda: subprocess.run(['pgrep', '-x', 'gzserver'], stdout=subprocess.DEVNULL).returncode != 0, 30,
-         what='the simulator stopping with the script')
+    poll(lambda: not simulator_running(), 30, what='the simulator stopping with the script')

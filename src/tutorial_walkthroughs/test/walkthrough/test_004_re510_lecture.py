@@ -12,12 +12,10 @@ import math
 import os
 import re
 import shutil
-import subprocess
 
 import pytest
 
-from ros_cli import call, echo_once, model_pose, poll, rate, wait_for_service
-from user_session import UserSession
+from ros_cli import call, echo_once, model_pose, package_dir, poll, rate, simulator_running, wait_for_service, wait_until
 
 # "Create a launch file (spawn.launch)". Fixed: the lecture opens the xacro path with ' and closes
 # it with " (xacro would be handed a path with a quote in it); the placeholders are filled in.
@@ -57,23 +55,12 @@ FUNCTION_LAUNCH = '''<launch>
 '''
 
 
-def simulator_running():
-    return subprocess.run(['pgrep', '-x', 'gzserver'], stdout=subprocess.DEVNULL).returncode == 0
-
-
-@pytest.fixture
-def user(tmp_path):
-    session = UserSession(tmp_path, 're510')
-    yield session
-    session.close()
-
 
 def joint_position(user):
     return echo_once(user, '/simple_model/joint_states')['position'][0]
 
 
 def test_the_re510_lecture(user):
-    assert not simulator_running(), 'a simulator is already running: the walkthrough needs the machine to itself'
     # A catkin workspace, as ROS's own tutorials make it before the lecture starts.
     user.run('''mkdir -p ~/catkin_ws/src
                 cd ~/catkin_ws
@@ -87,7 +74,7 @@ def test_the_re510_lecture(user):
                 mkdir config
                 mkdir launch''')
     # The lecture's model.xacro, in the package's model/ folder (its "Package structure" slide).
-    model = subprocess.check_output(['rospack', 'find', 'simple_model_description'], text=True).strip()
+    model = package_dir('simple_model_description')
     os.makedirs(user.path('~/catkin_ws/src/tutorial/model'))
     shutil.copy(os.path.join(model, 'urdf', 'model.xacro'), user.path('~/catkin_ws/src/tutorial/model/model.xacro'))
     user.write('~/catkin_ws/src/tutorial/launch/spawn.launch', SPAWN_LAUNCH)
@@ -139,8 +126,8 @@ def test_the_re510_lecture(user):
 
     # "Give command input through the topic /command", as typed: -l latches, and the command stays on.
     command = user.start('rostopic pub -l /simple_model/joint1_position_controller/command std_msgs/Float64 "data: 1.5"')
-    reached = poll(lambda: abs(joint_position(user) - 1.5) < 0.03 and joint_position(user), 30,
-                   what='joint_1 reaching the commanded 1.5 rad')
+    reached = wait_until(lambda: joint_position(user), lambda q: abs(q - 1.5) < 0.03, 30,
+                         'joint_1 reaching the commanded 1.5 rad')
     assert 1.47 < reached < 1.53
     state = echo_once(user, '/simple_model/joint1_position_controller/state')
     assert state['set_point'] == pytest.approx(1.5)
@@ -159,7 +146,7 @@ def test_the_re510_lecture(user):
     # Build a simple machine by Gazebo GUI. Stand-in for the model editor: the vehicle as it saves
     # it to ~/model_editor_models/my_vehicle, with the lecture's edits to model.sdf (the chassis
     # mesh, the skid-steer plugin, the lidar). Inserting it (the Insert tab) is spawn_model here.
-    vehicle = subprocess.check_output(['rospack', 'find', 'simple_vehicle_description'], text=True).strip()
+    vehicle = package_dir('simple_vehicle_description')
     shutil.copytree(os.path.join(vehicle, 'models', 'my_vehicle'), user.path('~/model_editor_models/my_vehicle'))
     user.run('rosrun gazebo_ros spawn_model -sdf -file ~/model_editor_models/my_vehicle/model.sdf '
              '-model my_vehicle -x 5 -y 0')
@@ -170,8 +157,8 @@ def test_the_re510_lecture(user):
     assert 1.0 < nearest < 2.0
     start = model_pose(user, 'my_vehicle')
     drive = user.start("rostopic pub -r 10 /cmd_vel geometry_msgs/Twist '{linear: {x: 0.5}}'")
-    moved = poll(lambda: model_pose(user, 'my_vehicle')[0] - start[0] > 0.5 and model_pose(user, 'my_vehicle'), 30,
-                 what='the vehicle driving forward on /cmd_vel')
+    moved = wait_until(lambda: model_pose(user, 'my_vehicle'), lambda p: p[0] - start[0] > 0.5, 30,
+                       'the vehicle driving forward on /cmd_vel')
     drive.interrupt()
     assert abs(moved[1] - start[1]) < 0.2, 'it drove straight'
 
