@@ -11,6 +11,7 @@ namespace {
 double clampTo(double value, double low, double high) { return std::max(low, std::min(high, value)); }
 
 std::string number(double value) {
+  if (std::isnan(value)) return "nan";  // not glibc's "-nan" for a NaN with its sign bit set
   std::ostringstream out;
   out << value;
   return out.str();
