@@ -35,8 +35,7 @@ std::string validate(const AxisConfig& axis, const std::string& name) {
 }  // namespace
 
 std::string validate(const ControllerConfig& config) {
-  for (const auto& [axis, name] : {std::make_pair(&config.linear, "linear"), std::make_pair(&config.angular, "angular")}) {
-    const std::string problem = validate(*axis, name);
+  for (const std::string& problem : {validate(config.linear, "linear"), validate(config.angular, "angular")}) {
     if (!problem.empty()) return problem;
   }
   if (!(config.derivative_filter_time >= 0.0))

@@ -137,7 +137,10 @@ TEST(Pid, BadGainsAreRefused) {
   PidGains negative_filter;
   negative_filter.d_filter_time = -0.1;
   const std::pair<PidGains, const char*> cases[] = {
-      {nan_p, "p: "}, {negative_clamp, "i_clamp: "}, {inverted_limits, "output_min"}, {negative_filter, "d_filter_time: "}};
+      {nan_p, "p: "},
+      {negative_clamp, "i_clamp: "},
+      {inverted_limits, "output_min"},
+      {negative_filter, "d_filter_time: "}};
   for (const auto& [bad, field] : cases) {
     try {
       Pid pid(bad);
