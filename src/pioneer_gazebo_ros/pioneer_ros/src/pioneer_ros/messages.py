@@ -5,7 +5,7 @@ Gazebo's /gazebo/get_model_state answers the model's pose and twist in the refer
 odometry_from_model_state rotates it there. (The report's odometry publisher copied the world
 twist, so its forward speed was only right while the robot faced along the world's x.)
 """
-from geometry_msgs.msg import Quaternion, TransformStamped, Twist, Vector3
+from geometry_msgs.msg import Quaternion, TransformStamped, Vector3
 from nav_msgs.msg import Odometry
 
 from pioneer_ros.pose_math import normalize_quaternion, rotate_inverse
@@ -49,16 +49,3 @@ def odometry_from_model_state(pose, twist, stamp, frame_id, child_frame_id):
     odom.twist.twist.linear = Vector3(*linear)
     odom.twist.twist.angular = Vector3(*angular)
     return odom
-
-
-def twist_message(linear, angular):
-    """A planar velocity command: linear.x (m/s) and angular.z (rad/s)."""
-    msg = Twist()
-    msg.linear.x = linear
-    msg.angular.z = angular
-    return msg
-
-
-def planar_velocity(odometry):
-    """(forward speed, yaw rate) of a nav_msgs/Odometry, whose twist is in the robot frame."""
-    return odometry.twist.twist.linear.x, odometry.twist.twist.angular.z

@@ -1,5 +1,5 @@
-"""pioneer_ros.messages: tf and odometry from a model state, velocity commands (ROS message
-types only; no ROS master needed)."""
+"""pioneer_ros.messages: tf and odometry from a model state (ROS message types only; no ROS
+master needed)."""
 import math
 import os
 import sys
@@ -11,8 +11,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..'
 genpy = pytest.importorskip('genpy')
 from geometry_msgs.msg import Pose, Twist  # noqa: E402
 
-from pioneer_ros.messages import (odometry_from_model_state, planar_velocity, transform_from_pose,  # noqa: E402
-                                  twist_message)
+from pioneer_ros.messages import odometry_from_model_state, transform_from_pose  # noqa: E402
 from pioneer_ros.pose_math import quaternion_from_yaw  # noqa: E402
 
 
@@ -56,7 +55,6 @@ def test_odometry_twist_is_in_the_robot_frame():
     assert odom.twist.twist.linear.x == pytest.approx(0.5)
     assert odom.twist.twist.linear.y == pytest.approx(0.0, abs=1e-12)
     assert odom.twist.twist.angular.z == pytest.approx(0.2)
-    assert planar_velocity(odom) == pytest.approx((0.5, 0.2))
 
 
 def test_odometry_reports_sideways_slip():
@@ -67,9 +65,3 @@ def test_odometry_reports_sideways_slip():
 def test_ground_truth_has_zero_covariance():
     odom = odometry_from_model_state(pose(0, 0, 0, 0.0), world_twist(0, 0, 0), STAMP, 'world', 'r')
     assert list(odom.pose.covariance) == [0.0] * 36 and list(odom.twist.covariance) == [0.0] * 36
-
-
-def test_twist_message_is_planar():
-    msg = twist_message(0.3, -0.4)
-    assert (msg.linear.x, msg.linear.y, msg.linear.z) == (0.3, 0.0, 0.0)
-    assert (msg.angular.x, msg.angular.y, msg.angular.z) == (0.0, 0.0, -0.4)
