@@ -4,6 +4,12 @@
 // relative, so remap them (pioneer_bringup.launch does). The algorithm and its timeouts:
 // pioneer_ros/body_velocity_controller.h.
 //
+// Each command goes out when it comes, as the report's controller (which works in the command's
+// callback) sends it, and the update runs again every 1 / rate s of sim time between commands (the
+// loop's corrections, and the stop after cmd_timeout). Sent only on the 20 Hz tick, a command would
+// wait up to 50 ms, which put enough lag into move_base's loop to halve the Pioneer's exploration
+// speed and make explore give up goals (docs/PERFORMANCE.md).
+//
 // Parameters: the tree of pioneer_controller_params.yaml (controller_gains/body/{linear,angular}/
 // {p,i,d,i_clamp}, feedforward, limits, derivative_filter_time, rate, cmd_timeout, odom_timeout),
 // read from the node's private namespace, or, when that has no controller_gains, from
@@ -151,7 +157,9 @@ class PidControllerNode {
       controller_.setCommand(PlanarVelocity{msg->linear.x, msg->angular.z}, ros::Time::now().toSec());
     } catch (const std::invalid_argument& e) {
       ROS_WARN_THROTTLE(5.0, "%s: command ignored: %s", ros::this_node::getName().c_str(), e.what());
+      return;
     }
+    update();  // a command goes out when it comes, as the report's controller sends it
   }
 
   void onOdometry(const nav_msgs::Odometry::ConstPtr& msg) {

@@ -6,6 +6,7 @@ command, stays level, and the drive's odometry agrees with the ground truth."""
 import math
 import os
 import sys
+import time
 import unittest
 
 import rospy
@@ -33,6 +34,16 @@ class Recorder:
 
     def since(self, t):
         return [m for stamp, m in self.messages if stamp >= t]
+
+    def first_since(self, t, timeout):
+        """(arrival time, message) of the first message at or after t, waiting up to timeout s."""
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            arrived = [(stamp, m) for stamp, m in self.messages if stamp >= t]
+            if arrived:
+                return arrived[0]
+            time.sleep(0.001)
+        return None, None
 
 
 class PioneerBringupTest(unittest.TestCase):
@@ -92,6 +103,23 @@ class PioneerBringupTest(unittest.TestCase):
         quiet = rospy.Time.now()
         rospy.sleep(0.5)
         self.assertEqual(self.drive_cmds.since(quiet), [], 'the controller should go quiet when idle')
+
+    def test_3a_a_command_goes_out_at_once(self):
+        # As the report's controller, which works in the command's callback: the drive gets a command
+        # when it comes, not at the controller's next 20 Hz tick, up to 50 ms later (with that delay
+        # in the loop, move_base explored the Pioneer's maze half as fast and explore gave up goals).
+        rospy.sleep(1.0)  # idle, past cmd_timeout
+        msg = Twist()
+        msg.linear.x = 0.2
+        sent = rospy.Time.now()
+        self.cmd_pub.publish(msg)
+        arrived, drive = self.drive_cmds.first_since(sent, timeout=5.0)
+        self.assertIsNotNone(drive, 'pioneer_pid_controller sent nothing on /pioneer/cmd_vel')
+        self.assertLess((arrived - sent).to_sec(), 0.01)  # a message's way there and back, not a tick
+        # The command, plus at most p (0.5) times the shortfall of the robot at rest.
+        self.assertGreaterEqual(drive.linear.x, 0.2)
+        self.assertLessEqual(drive.linear.x, 0.3 + 1e-9)
+        rospy.sleep(1.0)  # let it stop again
 
     def test_4_robot_drives_with_the_drive_plugin(self):
         # Back to the spawn point, facing east along the corridor: test_3 left the robot turned
