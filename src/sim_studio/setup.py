@@ -1,0 +1,8 @@
+# Installs the sim_studio Python package (src/sim_studio) for catkin; do not run it directly.
+from setuptools import find_packages, setup
+from catkin_pkg.python_setup import generate_distutils_setup
+
+setup(**generate_distutils_setup(
+    packages=find_packages("src"),
+    package_dir={"": "src"},
+))
