@@ -158,7 +158,8 @@ def run(args, procs):
     x, y, yaw = args.start
     walls = load_walls(WALLS)
     area = ReachableArea(walls, INSCRIBED, (x, y))
-    launch = ['find_frontier', 'explore_maze.launch', 'explorer:=' + args.explorer, 'rviz:=%s' % str(args.gui).lower(),
+    launch = ['find_frontier', 'explore_maze.launch', 'explorer:=' + args.explorer, 'gui:=%s' % str(args.gui).lower(),
+              'rviz:=%s' % str(args.gui and bool(os.environ.get('DISPLAY'))).lower(),
               'x:=%g' % x, 'y:=%g' % y, 'yaw:=%g' % yaw]
     print('demo: starting the simulator, hector_mapping, move_base and %s (roslaunch %s)' % (args.explorer, ' '.join(launch)),
           flush=True)
@@ -171,6 +172,9 @@ def run(args, procs):
     watch = Watch(area, walls, (x, y, yaw), status_topic)
     wait_until(lambda: watch.status.startswith('exploring'), 120, 'the first exploration goal', procs)
     set_real_time_factor(args.rtf)
+    if args.gui:
+        wait_until(lambda: master.hasParam('/gazebo_gui/url'), 30, 'the studio', procs)
+        print('demo: the studio (gzclient in a browser): open %s' % master.getParam('/gazebo_gui/url'), flush=True)
     up = time.monotonic() - wall_start
     sim0, wall0 = rospy.get_time(), time.monotonic()
     print('demo: up in %.0f s; exploring %.1f m2 of reachable free area (%s)' % (
@@ -216,7 +220,7 @@ def run(args, procs):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
     parser.add_argument('--explorer', choices=['find_frontier', 'explore'], default='find_frontier')
-    parser.add_argument('--gui', action='store_true', help='open rviz (needs a display)')
+    parser.add_argument('--gui', action='store_true', help='start the studio (a page in the browser, URL printed) and, with a display, rviz')
     parser.add_argument('--rtf', type=float, default=20.0,
                         help='target real-time factor (default 20; 2 cores keep up with the whole stack to 25-27x; '
                              '0: as fast as the simulator goes)')

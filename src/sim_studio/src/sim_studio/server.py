@@ -71,7 +71,12 @@ class Studio:
         self._runner = web.AppRunner(self.app(), access_log=None)
         await self._runner.setup()
         site = web.TCPSite(self._runner, self.host, self.port)
-        await site.start()  # OSError when the port is taken: the node says so
+        try:
+            await site.start()
+        except OSError:  # the port is taken: the node says so, or tries the next
+            await self._runner.cleanup()
+            self._runner = None
+            raise
         if self.port == 0:
             self.port = self._runner.addresses[0][1]
 

@@ -101,3 +101,18 @@ def test_bad_websocket_messages_get_clear_errors_and_the_server_stays_up(tmp_pat
         assert (await again.receive_json())["type"] == "hello"
         await again.close()
     serve(tmp_path, "", check)
+
+
+def test_a_taken_port_is_reported_and_the_next_server_can_try_again(tmp_path):
+    async def run():
+        first = Studio("127.0.0.1", 0, "", {"": str(tmp_path)})
+        await first.start()
+        second = Studio("127.0.0.1", first.port, "", {"": str(tmp_path)})
+        with pytest.raises(OSError):
+            await second.start()
+        second.port = 0
+        await second.start()  # nothing left half-open by the failed try
+        assert second.port not in (0, first.port)
+        await second.stop()
+        await first.stop()
+    asyncio.run(run())
