@@ -63,6 +63,9 @@ class Studio:
         app = web.Application(middlewares=[self._guard], client_max_size=MAX_MESSAGE_BYTES)
         app.router.add_route("GET", "/ws", self._websocket)
         app.router.add_route("GET", "/views.json", self._view_list)
+        for view in self.views.values():
+            for method, path, handler in view.routes():
+                app.router.add_route(method, "/api/%s/%s" % (view.name, path.lstrip("/")), handler)
         app.router.add_route("*", "/{path:.*}", self._file)
         return app
 

@@ -31,6 +31,13 @@ class View:
     def disconnected(self, client):
         """A page went: forget what was kept for it."""
 
+    def routes(self):
+        """HTTP routes of the view's own, for what a websocket message cannot carry well (a
+        mesh file for the browser's loader): [(method, path, handler)], served at
+        /api/<name>/<path> behind the same token as every request. A handler is an aiohttp
+        handler; it must serve only what the view itself names (never a path from the request)."""
+        return []
+
     async def handle(self, client, message):
         """A message from a page for this view (a dict with "type"; "id" when it wants a reply).
         Raise ValueError with a clear text for a bad request: the page gets it as an error."""
