@@ -68,6 +68,9 @@ class CameraPlugin : public ModelPlugin {
   explicit CameraPlugin(const PluginContext& context);
   void afterStep(const ros::Time& now) override;
   void reset() override;
+  std::optional<SensorTopic> sensorTopic() const override {
+    return SensorTopic{"camera", image_publisher_.getTopic(), config_.link, config_.pose, config_.far_clip};
+  }
 
  private:
   CameraConfig config_;

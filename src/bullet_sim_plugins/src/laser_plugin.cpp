@@ -34,6 +34,10 @@ class LaserPlugin : public ModelPlugin {
   explicit LaserPlugin(const PluginContext& context);
   void afterStep(const ros::Time& now) override;
   void reset() override { next_update_ = ros::Time(0); }
+  std::optional<SensorTopic> sensorTopic() const override {
+    const LaserConfig& c = scanner_.config();
+    return SensorTopic{"laser", publisher_.getTopic(), c.link, c.pose, c.range_max};
+  }
 
  private:
   LaserScanner scanner_;

@@ -23,6 +23,7 @@
 //  - All times are sim time (`now`); never read the wall clock for behaviour, only for log throttling.
 #include <ros/time.h>
 
+#include <optional>
 #include <string>
 
 #include "bullet_sim_core/model_description.h"
@@ -41,6 +42,16 @@ struct PluginContext {
   std::string label() const { return "model '" + model.name() + "': " + pluginLibraryName(plugin.filename); }
 };
 
+// A sensor's output as a client draws it from its topic (the studio's laser rays, a camera's view):
+// /gazebo/scene_info lists one marker per sensor plugin that says what it publishes.
+struct SensorTopic {
+  std::string kind;   // "laser" or "camera"
+  std::string topic;  // the resolved name of its LaserScan or Image topic
+  std::string link;   // the link the sensor sits on
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // the sensor in the link frame
+  double range = 0.0;  // m: a laser's range max, a camera's far clip
+};
+
 class ModelPlugin {
  public:
   virtual ~ModelPlugin() = default;
@@ -50,6 +61,8 @@ class ModelPlugin {
   virtual void afterStep(const ros::Time& /*now*/) {}
   // reset_simulation / reset_world: forget state that refers to the old time.
   virtual void reset() {}
+  // A sensor plugin's output, for clients that draw it; other plugins have none.
+  virtual std::optional<SensorTopic> sensorTopic() const { return std::nullopt; }
 };
 
 }  // namespace bullet_sim
