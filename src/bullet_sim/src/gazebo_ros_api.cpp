@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "bullet_sim/pose_info.h"
 #include "bullet_sim_core/description_error.h"
 #include "bullet_sim_core/sdf_parser.h"
 #include "bullet_sim_core/urdf_parser.h"
@@ -565,25 +566,17 @@ void GazeboRosApi::publishStates(bool force) {
   const ros::WallTime wall = ros::WallTime::now();
   if (!force && wall - last_states_wall_ < ros::WallDuration(0.001)) return;
   last_states_wall_ = wall;
-  gazebo_msgs::ModelStates model_states;
-  gazebo_msgs::LinkStates link_states;
-  for (const std::string& name : sim_.physics().modelNames()) {
-    const PhysicsModel* model = sim_.physics().findModel(name);
-    if (models) {
+  if (models) {
+    gazebo_msgs::ModelStates model_states;
+    for (const std::string& name : sim_.physics().modelNames()) {
+      const PhysicsModel* model = sim_.physics().findModel(name);
       model_states.name.push_back(name);
       model_states.pose.push_back(toPoseMsg(model->pose()));
       model_states.twist.push_back(toTwistMsg(model->twist()));
     }
-    if (links) {
-      for (const std::string& link : model->linkNames()) {
-        link_states.name.push_back(name + "::" + link);
-        link_states.pose.push_back(toPoseMsg(model->linkPose(link)));
-        link_states.twist.push_back(toTwistMsg(model->linkTwist(link)));
-      }
-    }
+    model_states_pub_.publish(std::move(model_states));
   }
-  if (models) model_states_pub_.publish(std::move(model_states));
-  if (links) link_states_pub_.publish(std::move(link_states));
+  if (links) link_states_pub_.publish(linkStates(sim_.physics()));  // what /gazebo/pose_info carries too
 }
 
 }  // namespace bullet_sim

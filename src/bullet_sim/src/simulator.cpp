@@ -6,6 +6,9 @@
 #include <cstdio>
 
 #include "bullet_sim/gazebo_ros_api.h"
+#include "bullet_sim/joint_command_topic.h"
+#include "bullet_sim/pose_info.h"
+#include "bullet_sim/scene_info.h"
 #include "bullet_sim/scene_markers.h"
 #include "bullet_sim_core/description_error.h"
 #include "bullet_sim_plugins/plugin_loader.h"
@@ -38,6 +41,9 @@ Simulator::Simulator(const WorldDescription& world, const ResourceResolver& reso
   for (const PlacedModel& placed : world.models) spawn(placed.model, placed.pose, "");
   api_ = std::make_unique<GazeboRosApi>(*this);
   scene_markers_ = std::make_unique<SceneMarkers>(physics_);
+  pose_info_ = std::make_unique<PoseInfo>(physics_);
+  scene_info_ = std::make_unique<SceneInfo>();
+  joint_commands_ = std::make_unique<JointCommandTopic>(physics_);
   publishClock(true);
 }
 
@@ -60,11 +66,15 @@ void Simulator::spawn(const ModelDescription& model, const Eigen::Isometry3d& po
     physics_.removeModel(model.name);
     throw;
   }
+  scene_changed_ = true;
 }
 
 bool Simulator::remove(const std::string& name) {
   plugins_.erase(name);  // plugins refer to the model: they go first
-  return physics_.removeModel(name);
+  if (joint_commands_) joint_commands_->forgetModel(name);
+  if (!physics_.removeModel(name)) return false;
+  scene_changed_ = true;
+  return true;
 }
 
 void Simulator::setPaused(bool paused) {
@@ -74,6 +84,7 @@ void Simulator::setPaused(bool paused) {
 
 void Simulator::resetWorld() {
   physics_.resetModels();
+  joint_commands_->clear();  // as Gazebo's Model::Reset resets its JointController
   for (auto& [name, plugins] : plugins_)
     for (LoadedPlugin& p : plugins) p.plugin->reset();
   pace_wall_start_ = ros::WallTime();
@@ -91,8 +102,9 @@ void Simulator::stepOnce() {
   timing_.mark();
   const ros::Time before = now();
   if (before_step) before_step(before);
-  timing_.lap("/gazebo apply_joint_effort, apply_body_wrench");
   const double dt = physics_.settings().max_step_size;
+  joint_commands_->beforeStep(dt);
+  timing_.lap("/gazebo apply_joint_effort, apply_body_wrench, joint_cmd");
   for (auto& [name, plugins] : plugins_) {
     for (LoadedPlugin& p : plugins) {
       p.plugin->beforeStep(before, dt);
@@ -110,7 +122,8 @@ void Simulator::stepOnce() {
   }
   api_->afterStep(after);
   scene_markers_->publish();
-  timing_.lap("/gazebo model_states, link_states, scene_markers");
+  pose_info_->publish();
+  timing_.lap("/gazebo model_states, link_states, scene_markers, pose_info");
   publishClock(false);
   timing_.lap("/clock");
   timing_.countStep();
@@ -135,11 +148,19 @@ void Simulator::publishClock(bool force) {
   last_clock_wall_ = wall;
 }
 
+void Simulator::publishSceneIfChanged() {
+  if (!scene_changed_) return;
+  scene_info_->publish(physics_, plugins_);
+  scene_changed_ = false;
+}
+
 void Simulator::run() {
   ros::CallbackQueue& queue = *ros::getGlobalCallbackQueue();
   while (ros::ok()) {
     if (paused_) {
       queue.callAvailable(ros::WallDuration(0.01));
+      publishSceneIfChanged();
+      pose_info_->publish();  // a model moved while paused shows within the loop's 10 ms (at most 60 Hz)
       if (ros::WallTime::now() - last_clock_wall_ > kPausedClockPeriod) {
         publishClock(true);
         api_->publishStates(true);
@@ -149,6 +170,7 @@ void Simulator::run() {
     }
     timing_.mark();
     queue.callAvailable();
+    publishSceneIfChanged();
     timing_.lap("ROS callbacks (services, subscriptions)");
     if (paused_) continue;
     stepOnce();

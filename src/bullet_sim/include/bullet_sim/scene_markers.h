@@ -24,4 +24,9 @@ class SceneMarkers {
 // The markers for one model (namespace = model name), poses at the current state.
 void appendModelMarkers(const PhysicsModel& model, const ros::Time& stamp, visualization_msgs::MarkerArray& out);
 
+// One visual as a marker: its type, size, colour and mesh resource, posed in the frame that
+// `frame_pose` places (its link's world pose for the world frame, identity for the link's own
+// frame). Header, namespace, id and text are the caller's. /gazebo/scene_info draws with these too.
+visualization_msgs::Marker visualMarker(const VisualShape& visual, const Eigen::Isometry3d& frame_pose);
+
 }  // namespace bullet_sim

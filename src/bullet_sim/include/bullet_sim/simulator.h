@@ -18,6 +18,9 @@
 namespace bullet_sim {
 
 class GazeboRosApi;
+class JointCommandTopic;
+class PoseInfo;
+class SceneInfo;
 class SceneMarkers;
 
 struct SimulatorOptions {
@@ -35,7 +38,8 @@ class Simulator {
   void runSteps(int n);  // n steps now, ignoring pause and pacing (for tools and tests)
 
   // Spawning goes through here so that sensors and plugins come with the model. Throws
-  // DescriptionError naming the problem; nothing is added then.
+  // DescriptionError naming the problem; nothing is added then. Both republish /gazebo/scene_info;
+  // remove() drops the model's /gazebo/joint_cmd commands.
   void spawn(const ModelDescription& model, const Eigen::Isometry3d& pose, const std::string& robot_namespace);
   bool remove(const std::string& name);
 
@@ -54,6 +58,7 @@ class Simulator {
  private:
   void stepOnce();
   void publishClock(bool force);
+  void publishSceneIfChanged();
 
   std::string world_name_;
   ResourceResolver resolver_;
@@ -68,6 +73,11 @@ class Simulator {
   ros::WallTime last_clock_wall_;
   std::unique_ptr<GazeboRosApi> api_;
   std::unique_ptr<SceneMarkers> scene_markers_;
+  // What a client like sim_studio reads and sends (docs/SIMULATOR.md, "For a client: ...").
+  std::unique_ptr<PoseInfo> pose_info_;
+  std::unique_ptr<SceneInfo> scene_info_;
+  std::unique_ptr<JointCommandTopic> joint_commands_;
+  bool scene_changed_ = true;  // models came or went since scene_info was last published
   // Pacing: wall time and sim time at the last (re)start of real-time tracking.
   ros::WallTime pace_wall_start_;
   double pace_sim_start_ = 0.0;
