@@ -1,0 +1,198 @@
+"""Topics: rqt's Topic Monitor and rostopic echo. Every topic the master knows, with its type and
+publishers, refreshed every 2 s; a checkbox per topic measures its rate and bandwidth, and
+choosing a topic echoes its newest message as a tree of fields.
+
+Only the topics some page monitors or echoes are subscribed, with rospy.AnyMsg (as rostopic bw
+does): a message is counted, not decoded, and only the echoed topic's newest message is decoded,
+at most ECHO_RATE times a second. Nothing runs while no page is open.
+"""
+import asyncio
+import logging
+import time
+
+import rosgraph
+import rosgraph.names
+import roslib.message
+import rospy
+
+from sim_studio.view import View
+from sim_studio.views.topics.message_tree import message_tree
+from sim_studio.views.topics.statistics import TopicStatistics
+
+TICK = 0.1            # s: the view's clock; echo at most every tick
+STATS_PERIOD = 1.0    # s between rate/bandwidth updates (rostopic prints every second)
+LIST_PERIOD = 2.0     # s between the master's topic lists
+
+
+class _Watch:
+    """A topic subscribed because a page monitors or echoes it."""
+
+    def __init__(self, topic):
+        self.topic = topic
+        self.stats = TopicStatistics()
+        self.latest = None  # (type, serialized bytes) of the newest message
+        self.seq = 0
+        self.subscriber = rospy.Subscriber(topic, rospy.AnyMsg, self._received, queue_size=100)
+
+    def _received(self, msg):  # rospy's thread: count and keep, decode nothing
+        self.stats.add(rospy.get_time(), time.time(), len(msg._buff))
+        self.latest = (msg._connection_header.get("type", ""), msg._buff)
+        self.seq += 1
+
+
+class _Page:
+    def __init__(self):
+        self.monitored = set()
+        self.echo = None
+        self.echo_seq = -1
+
+
+class TopicsView(View):
+    title = "Topics"
+    order = 10
+
+    def __init__(self, studio):
+        super().__init__(studio)
+        self._pages = {}
+        self._watches = {}
+        self._task = None
+        self._topics = []   # the last list from the master
+        self._list_error = None
+
+    # --- pages ------------------------------------------------------------------------------
+    def connected(self, client):
+        self._pages[client] = _Page()
+        if self._task is None or self._task.done():
+            self._task = asyncio.ensure_future(self._run())
+        if self._topics:
+            client.send_latest(("topics", "list"), self._list_message())
+
+    def disconnected(self, client):
+        self._pages.pop(client, None)
+        self._update_subscriptions()
+        if not self._pages and self._task is not None:
+            self._task.cancel()
+            self._task = None
+
+    def stop(self):
+        if self._task is not None:
+            self._task.cancel()
+        self._pages.clear()
+        self._update_subscriptions()
+
+    async def handle(self, client, message):
+        page = self._pages.setdefault(client, _Page())
+        kind = message["type"]
+        if kind == "monitor":
+            topic = _topic_name(message.get("topic"))
+            (page.monitored.add if message.get("on", True) else page.monitored.discard)(topic)
+            self._update_subscriptions()
+            client.reply(message, topic=topic, on=topic in page.monitored)
+        elif kind == "echo":
+            page.echo = None if message.get("topic") in (None, "") else _topic_name(message.get("topic"))
+            page.echo_seq = -1
+            self._update_subscriptions()
+            client.reply(message, topic=page.echo)
+        elif kind == "refresh":
+            await self._refresh_list()
+            client.reply(message, **self._list_message())
+        else:
+            raise ValueError("topics: unknown request %r (monitor, echo, refresh)" % kind)
+
+    # --- the view's clock -------------------------------------------------------------------
+    async def _run(self):
+        ticks = 0
+        stats_every, list_every = round(STATS_PERIOD / TICK), round(LIST_PERIOD / TICK)
+        while True:
+            try:
+                if ticks % list_every == 0:
+                    await self._refresh_list()
+                    for client in list(self._pages):
+                        client.send_latest(("topics", "list"), self._list_message())
+                if ticks % stats_every == 0:
+                    self._send_stats()
+                self._send_echoes()
+            except Exception:  # a bug here must not stop the monitor for good
+                logging.getLogger("sim_studio").exception("sim_studio: topics view")
+            ticks += 1
+            await asyncio.sleep(TICK)
+
+    async def _refresh_list(self):
+        try:
+            state, types = await self.studio.blocking(_master_state)
+        except Exception as e:  # the master went away: say so, keep the last list
+            self._list_error = "cannot reach the ROS master: %s" % e
+            return
+        self._list_error = None
+        publishers = {topic: nodes for topic, nodes in state[0]}
+        subscribers = {topic: nodes for topic, nodes in state[1]}
+        names = sorted(set(types) | set(publishers) | set(subscribers))
+        self._topics = [{"name": n, "type": types.get(n, ""), "publishers": len(publishers.get(n, ())),
+                         "subscribers": len(subscribers.get(n, ()))} for n in names]
+
+    def _list_message(self):
+        return {"view": self.name, "type": "list", "topics": self._topics, "error": self._list_error}
+
+    def _send_stats(self):
+        now = time.time()
+        for client, page in list(self._pages.items()):
+            stats = {topic: self._watches[topic].stats.summary(now) for topic in page.monitored
+                     if topic in self._watches}
+            client.send_latest(("topics", "stats"), {"view": self.name, "type": "stats", "stats": stats})
+
+    def _send_echoes(self):
+        decoded = {}  # one decode per topic per tick, however many pages echo it
+        for client, page in list(self._pages.items()):
+            watch = self._watches.get(page.echo)
+            if watch is None or watch.latest is None or watch.seq == page.echo_seq:
+                continue
+            page.echo_seq = watch.seq
+            if page.echo not in decoded:
+                decoded[page.echo] = _decode(page.echo, *watch.latest)
+            client.send_latest(("topics", "echo"), dict(decoded[page.echo], view=self.name, type="echo",
+                                                       count=watch.stats.count))
+
+    def _update_subscriptions(self):
+        wanted = set()
+        for page in self._pages.values():
+            wanted |= page.monitored
+            if page.echo:
+                wanted.add(page.echo)
+        for topic in set(self._watches) - wanted:
+            self._watches.pop(topic).subscriber.unregister()
+        for topic in wanted - set(self._watches):
+            self._watches[topic] = _Watch(topic)
+
+
+def _topic_name(topic):
+    if not isinstance(topic, str) or not rosgraph.names.is_legal_name(topic) or not topic.startswith("/"):
+        raise ValueError("topic: %r is not a global ROS topic name (e.g. /joint_states)" % (topic,))
+    return topic
+
+
+def _master_state():
+    master = rosgraph.Master(rospy.get_name())
+    return master.getSystemState(), dict(master.getTopicTypes())
+
+
+def _decode(topic, msg_type, buff):
+    """The echo of one serialized message: its tree, or an error saying why it cannot be shown."""
+    echo = {"topic": topic, "msg_type": msg_type}
+    try:
+        cls = roslib.message.get_message_class(msg_type)
+    except Exception:
+        cls = None
+    if cls is None:
+        echo["error"] = "the message type %s is not installed here, so its fields cannot be shown" % msg_type
+        return echo
+    try:
+        msg = cls()
+        msg.deserialize(buff)
+    except Exception as e:  # a publisher whose definition differs from ours
+        echo["error"] = "cannot decode a %s: %s" % (msg_type, e)
+        return echo
+    echo["fields"] = message_tree(msg)
+    return echo
+
+
+VIEW = TopicsView
