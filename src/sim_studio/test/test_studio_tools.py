@@ -230,6 +230,14 @@ class StudioTools(unittest.TestCase):
         self.wait("return document.querySelector('#topics-echo li[data-path=\"/data\"] .topics-value')"
                   "?.textContent === '2.5'", what="the echo does not show data: 2.5")
         save_screenshot(self.driver, "topics")
+        # the same topic plotted while monitored: rospy shares one subscription per topic in a
+        # process, so the monitor must not have made it one that hands the plot undecoded messages
+        self.show("plot")
+        self.type_into("#plot-path", "/studio_test/rate/data")
+        self.css("#plot-add").click()
+        values = self.wait("const s = window.studio.plot.series()['/studio_test/rate/data'];"
+                           "return s && s.v.length >= 5 && s.v", what="the monitored topic is not plotted")
+        self.assertEqual(set(values), {2.5})
 
     # --- graph ------------------------------------------------------------------------------
     def test_graph_lists_the_known_nodes_and_topic(self):

@@ -2,8 +2,9 @@
 the newest frame is decoded and encoded as JPEG here (OpenCV, conversion.py) at most MAX_FPS
 times a second and sent as a stream, so a slow page gets fewer frames, never old ones.
 
-Subscribed with rospy.AnyMsg: a camera at 30 Hz costs a copy per frame, and only the frames
-sent are decoded. Frames are encoded once per topic however many pages watch it.
+Frames are converted and encoded once per topic however many pages watch it, off the server's
+loop; a frame that arrives between two sends is only kept (rospy decodes it: an image's data is
+one copy).
 """
 import asyncio
 import base64
@@ -16,6 +17,7 @@ import rosgraph.names
 import rospy
 from sensor_msgs.msg import CompressedImage, Image
 
+from sim_studio import subscription
 from sim_studio.view import View
 from sim_studio.views.images.conversion import ImageError, compressed_to_bgr, encode_jpeg, image_to_bgr
 
@@ -26,16 +28,15 @@ IMAGE_TYPES = {Image._type: Image, CompressedImage._type: CompressedImage}
 class _Camera:
     """A watched image topic: its newest serialized frame."""
 
-    def __init__(self, topic):
+    def __init__(self, topic, type_name):
         self.topic = topic
         self.latest = None
         self.seq = 0
-        self.received = 0
         # a large buffer: rospy's default makes large images queue behind each other
-        self.subscriber = rospy.Subscriber(topic, rospy.AnyMsg, self._received, queue_size=1, buff_size=1 << 24)
+        self.subscriber = subscription.subscribe(topic, type_name, self._received, queue_size=1, buff_size=1 << 24)
 
     def _received(self, msg):  # rospy's thread
-        self.latest = (msg._connection_header.get("type", ""), msg._buff)
+        self.latest = msg
         self.seq += 1
 
 
@@ -83,17 +84,18 @@ class ImagesView(View):
                 page.topic = topic
             page.dynamic = bool(message.get("dynamic", False))
             page.sent_seq = 0
-            self._update()
+            new = page.topic and page.topic not in self._cameras
+            self._update(await self.studio.blocking(_topic_types) if new else {})
             client.reply(message, topic=page.topic, dynamic=page.dynamic)
         else:
             raise ValueError("images: unknown request %r (topics, watch)" % kind)
 
-    def _update(self):
+    def _update(self, types=None):
         wanted = {page.topic for page in self._pages.values() if page.topic}
         for topic in set(self._cameras) - wanted:
             self._cameras.pop(topic).subscriber.unregister()
         for topic in wanted - set(self._cameras):
-            self._cameras[topic] = _Camera(topic)
+            self._cameras[topic] = _Camera(topic, (types or {}).get(topic, ""))
         if wanted and (self._task is None or self._task.done()):
             self._task = asyncio.ensure_future(self._run())
         elif not wanted and self._task is not None:
@@ -124,15 +126,15 @@ class ImagesView(View):
 
 
 def _frame(topic, latest, dynamic):
-    """The page's message for one serialized frame: a JPEG, or an error saying why not."""
-    msg_type, buff = latest
+    """The page's message for one frame: a JPEG, or an error saying why not."""
+    msg_type = subscription.type_of(latest)
     frame = {"topic": topic, "msg_type": msg_type}
     cls = IMAGE_TYPES.get(msg_type)
     if cls is None:
         frame["error"] = "%s carries %s, not an image (sensor_msgs/Image or CompressedImage)" % (topic, msg_type)
         return frame
     try:
-        msg = cls().deserialize(buff)
+        msg = subscription.typed(latest, cls)
         image = image_to_bgr(msg, dynamic) if cls is Image else compressed_to_bgr(msg)
         frame["jpeg"] = base64.b64encode(encode_jpeg(image)).decode("ascii")
     except (ImageError, cv2.error, ValueError) as e:

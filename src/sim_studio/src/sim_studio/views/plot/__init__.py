@@ -18,6 +18,7 @@ import roslib.message
 import rospy
 from topic_plot.fields import FieldError, check_path, extract, message_time, parse_field_path, split_topic_field
 
+from sim_studio import subscription
 from sim_studio.view import View
 from sim_studio.views.plot.completion import numeric_paths
 from sim_studio.views.plot.decimation import SampleBuffer, budget, decimate
@@ -115,13 +116,13 @@ class PlotView(View):
 
     async def _new_series(self, path):
         topics = dict(await self.studio.blocking(rospy.get_published_topics))
+        if path in topics:
+            raise ValueError("%s is a topic: name one of its numeric fields too, e.g. %s/data" % (path, path))
         split = split_topic_field(path, topics)
         if split is None:
             raise ValueError("%s: no published topic is a prefix of it (is its publisher running? published: %s)"
                              % (path, ", ".join(sorted(topics)[:30]) or "none"))
         topic, field = split
-        if not field:
-            raise ValueError("%s is a topic: name one of its numeric fields too, e.g. %s/data" % (path, topic))
         cls = roslib.message.get_message_class(topics[topic])
         if cls is None:
             raise ValueError("%s: its type %s is not installed here" % (path, topics[topic]))
@@ -134,11 +135,13 @@ class PlotView(View):
             series = self._series[path] = _Series(path, topic, field)
             self._by_topic[topic] = self._by_topic.get(topic, ()) + (series,)
             if topic not in self._subscribers:
-                self._subscribers[topic] = rospy.Subscriber(topic, cls, self._received, callback_args=topic,
+                self._subscribers[topic] = rospy.Subscriber(topic, cls, self._received, callback_args=(topic, cls),
                                                             queue_size=1000)
         return series
 
-    def _received(self, msg, topic):  # rospy's thread
+    def _received(self, msg, topic_class):  # rospy's thread
+        topic, cls = topic_class
+        msg = subscription.typed(msg, cls)  # an AnyMsg when another part of the process subscribed so first
         t = message_time(msg, rospy.get_time())
         for series in self._by_topic.get(topic, ()):
             try:

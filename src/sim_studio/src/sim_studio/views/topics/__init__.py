@@ -2,9 +2,11 @@
 publishers, refreshed every 2 s; a checkbox per topic measures its rate and bandwidth, and
 choosing a topic echoes its newest message as a tree of fields.
 
-Only the topics some page monitors or echoes are subscribed, with rospy.AnyMsg (as rostopic bw
-does): a message is counted, not decoded, and only the echoed topic's newest message is decoded,
-at most ECHO_RATE times a second. Nothing runs while no page is open.
+Only the topics some page monitors or echoes are subscribed, and only while they are; the echoed
+topic's newest message goes to the page at most 10 times a second. Nothing runs while no page is
+open. (rostopic bw subscribes with rospy.AnyMsg to count bytes without decoding; in the studio's
+process that would hand AnyMsg to other views' callbacks on the same topic, so the topic's own
+class is used, and the size of a message is that of its serialization: subscription.py.)
 """
 import asyncio
 import logging
@@ -12,9 +14,9 @@ import time
 
 import rosgraph
 import rosgraph.names
-import roslib.message
 import rospy
 
+from sim_studio import subscription
 from sim_studio.view import View
 from sim_studio.views.topics.message_tree import message_tree
 from sim_studio.views.topics.statistics import TopicStatistics
@@ -27,16 +29,16 @@ LIST_PERIOD = 2.0     # s between the master's topic lists
 class _Watch:
     """A topic subscribed because a page monitors or echoes it."""
 
-    def __init__(self, topic):
+    def __init__(self, topic, type_name):
         self.topic = topic
         self.stats = TopicStatistics()
-        self.latest = None  # (type, serialized bytes) of the newest message
+        self.latest = None  # the newest message, as it arrived (decoded, or AnyMsg)
         self.seq = 0
-        self.subscriber = rospy.Subscriber(topic, rospy.AnyMsg, self._received, queue_size=100)
+        self.subscriber = subscription.subscribe(topic, type_name, self._received, queue_size=100)
 
-    def _received(self, msg):  # rospy's thread: count and keep, decode nothing
-        self.stats.add(rospy.get_time(), time.time(), len(msg._buff))
-        self.latest = (msg._connection_header.get("type", ""), msg._buff)
+    def _received(self, msg):  # rospy's thread: count and keep
+        self.stats.add(rospy.get_time(), time.time(), subscription.serialized_size(msg))
+        self.latest = msg
         self.seq += 1
 
 
@@ -69,7 +71,7 @@ class TopicsView(View):
 
     def disconnected(self, client):
         self._pages.pop(client, None)
-        self._update_subscriptions()
+        self._unsubscribe_unwanted()
         if not self._pages and self._task is not None:
             self._task.cancel()
             self._task = None
@@ -78,7 +80,7 @@ class TopicsView(View):
         if self._task is not None:
             self._task.cancel()
         self._pages.clear()
-        self._update_subscriptions()
+        self._unsubscribe_unwanted()
 
     async def handle(self, client, message):
         page = self._pages.setdefault(client, _Page())
@@ -86,12 +88,12 @@ class TopicsView(View):
         if kind == "monitor":
             topic = _topic_name(message.get("topic"))
             (page.monitored.add if message.get("on", True) else page.monitored.discard)(topic)
-            self._update_subscriptions()
+            await self._update_subscriptions()
             client.reply(message, topic=topic, on=topic in page.monitored)
         elif kind == "echo":
             page.echo = None if message.get("topic") in (None, "") else _topic_name(message.get("topic"))
             page.echo_seq = -1
-            self._update_subscriptions()
+            await self._update_subscriptions()
             client.reply(message, topic=page.echo)
         elif kind == "refresh":
             await self._refresh_list()
@@ -148,20 +150,31 @@ class TopicsView(View):
                 continue
             page.echo_seq = watch.seq
             if page.echo not in decoded:
-                decoded[page.echo] = _decode(page.echo, *watch.latest)
+                decoded[page.echo] = _decode(page.echo, watch.latest)
             client.send_latest(("topics", "echo"), dict(decoded[page.echo], view=self.name, type="echo",
                                                        count=watch.stats.count))
 
-    def _update_subscriptions(self):
+    def _wanted(self):
         wanted = set()
         for page in self._pages.values():
             wanted |= page.monitored
             if page.echo:
                 wanted.add(page.echo)
-        for topic in set(self._watches) - wanted:
+        return wanted
+
+    def _unsubscribe_unwanted(self):
+        for topic in set(self._watches) - self._wanted():
             self._watches.pop(topic).subscriber.unregister()
-        for topic in wanted - set(self._watches):
-            self._watches[topic] = _Watch(topic)
+
+    async def _update_subscriptions(self):
+        self._unsubscribe_unwanted()
+        new = self._wanted() - set(self._watches)
+        types = {t["name"]: t["type"] for t in self._topics}
+        if new - set(types):  # newer than the last list: ask the master now
+            await self._refresh_list()
+            types = {t["name"]: t["type"] for t in self._topics}
+        for topic in new - set(self._watches):
+            self._watches[topic] = _Watch(topic, types.get(topic, ""))
 
 
 def _topic_name(topic):
@@ -175,23 +188,19 @@ def _master_state():
     return master.getSystemState(), dict(master.getTopicTypes())
 
 
-def _decode(topic, msg_type, buff):
-    """The echo of one serialized message: its tree, or an error saying why it cannot be shown."""
+def _decode(topic, msg):
+    """The echo of one message: its tree, or an error saying why it cannot be shown."""
+    msg_type = subscription.type_of(msg)
     echo = {"topic": topic, "msg_type": msg_type}
     try:
-        cls = roslib.message.get_message_class(msg_type)
-    except Exception:
-        cls = None
-    if cls is None:
-        echo["error"] = "the message type %s is not installed here, so its fields cannot be shown" % msg_type
-        return echo
-    try:
-        msg = cls()
-        msg.deserialize(buff)
+        decoded = subscription.typed(msg)
     except Exception as e:  # a publisher whose definition differs from ours
         echo["error"] = "cannot decode a %s: %s" % (msg_type, e)
         return echo
-    echo["fields"] = message_tree(msg)
+    if decoded is None:
+        echo["error"] = "the message type %s is not installed here, so its fields cannot be shown" % msg_type
+    else:
+        echo["fields"] = message_tree(decoded)
     return echo
 
 
