@@ -135,7 +135,7 @@ class StudioApiTest(unittest.TestCase):
         self.assertEqual(info.name, links.name)
         self.assertIn('pendulum::bob', info.name)
         self.assertIn('box::body', info.name)
-        for name, got in zip(info.name, info.pose):
+        for name, got in zip(info.name, info.pose, strict=True):
             expected = self.gz.get_link_state(link_name=name, reference_frame='world').link_state.pose
             for field in ('x', 'y', 'z'):
                 self.assertAlmostEqual(getattr(got.position, field), getattr(expected.position, field), delta=1e-3)
@@ -177,7 +177,8 @@ class StudioApiTest(unittest.TestCase):
             for x in (1.5, -0.5):
                 start = time.monotonic()
                 self.assertTrue(self.gz.set_state('box', pose(x, 0, 0.1)).success)
-                seen = recorder.wait_for(lambda m: box_x(m) is not None and abs(box_x(m) - x) < 1e-9, 2.0, since=start)
+                seen = recorder.wait_for(lambda m, x=x: box_x(m) is not None and abs(box_x(m) - x) < 1e-9, 2.0,
+                                         since=start)
                 self.assertIsNotNone(seen, 'set_model_state to x=%g never showed in pose_info' % x)
                 self.assertLess(seen[0] - start, 0.2)
             # A model spawned while paused too.
@@ -343,7 +344,10 @@ class StudioApiTest(unittest.TestCase):
                                 ('pendulum::nope', 'model [pendulum] has no moving joint [nope]'),
                                 ('hinge', "expected 'model::joint'")):
                 self.send(name, force=1.0)
-                seen = log.wait_for(lambda m: m.level == Log.WARN and name in m.msg and words in m.msg, 5.0)
+                def warned(m, name=name, words=words):
+                    return m.level == Log.WARN and name in m.msg and words in m.msg
+
+                seen = log.wait_for(warned, 5.0)
                 self.assertIsNotNone(seen, 'no warning naming %s' % name)
                 self.assertTrue(self.gz.alive())
             # Not a number: a warning naming the field, and nothing applied.
