@@ -184,6 +184,10 @@ class StudioTools(unittest.TestCase):
             save_screenshot(self.driver, "plot")
             series = self.driver.execute_script("return window.studio.plot.series()")
             drawn = self.driver.execute_script("return window.studio.plot.drawn()")
+            png = self.driver.execute_script("return window.studio.plot.png()")
+            csv_text = self.driver.execute_async_script(
+                "const done = arguments[arguments.length - 1];"
+                "window.studio.plot.csv().then(done, (e) => done(String(e)));")
         finally:
             stop.set()
             for thread in threads:
@@ -209,6 +213,14 @@ class StudioTools(unittest.TestCase):
         # the chart draws them: its columns are time plus one per series
         self.assertEqual(len(drawn), 3)
         self.assertGreater(len(drawn[0]), 50)
+        # PNG: the chart as drawn; CSV: every sample the server kept, at full rate
+        self.assertTrue(png.startswith("data:image/png;base64,") and len(png) > 5000)
+        rows = [line.split(",") for line in csv_text.strip().splitlines()]
+        self.assertEqual(rows[0], ["field", "time", "value"])
+        fast_rows = [float(r[2]) for r in rows[1:] if r[0] == "/studio_test/fast/data"]
+        self.assertGreater(len(fast_rows), 2 * len(fast))  # not decimated
+        k = index[fast_rows[0]]
+        self.assertEqual(fast_rows, published["fast"][k:k + len(fast_rows)])
 
     # --- topics -----------------------------------------------------------------------------
     def test_topic_monitor_rate_type_and_echo(self):

@@ -257,5 +257,6 @@ export default function mount(element, studio) {
     drawn: () => (chart ? chart.data.map((column) => Array.from(column)) : []),
     paused: () => paused,
     png: () => (chart ? png().toDataURL('image/png') : null),
+    csv: () => studio.request('csv').then((reply) => reply.csv),  // what the CSV button saves
   };
 }
