@@ -13,7 +13,8 @@ function element(tag, attributes = {}, ...children) {
   return e;
 }
 
-const fixed = (values, digits = 3) => values.map((v) => (v == null ? '–' : v.toFixed(digits))).join('  ');
+// -0.000 reads as a sign where there is none: values that round to zero show as 0.
+const fixed = (values, digits = 3) => values.map((v) => (v == null ? '–' : (Math.abs(v) < 0.5 * 10 ** -digits ? 0 : v).toFixed(digits))).join('  ');
 
 export default function mount(root, studio) {
   const link = element('link', {rel: 'stylesheet', href: '/views/models/models.css'});

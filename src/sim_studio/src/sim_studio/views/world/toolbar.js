@@ -55,7 +55,13 @@ export class Toolbar {
     this.step.addEventListener('click', () => this.command('step'));
     this.resetWorld.addEventListener('click', () => this.command('reset_world'));
     this.resetTime.addEventListener('click', () => this.command('reset_time'));
-    this.target.addEventListener('change', () => this.command('target', {rtf: this.target.value}));
+    // While the user edits the target, the status does not overwrite it.
+    this.editing = false;
+    this.target.addEventListener('input', () => { this.editing = true; });
+    this.target.addEventListener('change', () => {
+      this.editing = false;
+      if (this.target.value.trim() !== '') this.command('target', {rtf: this.target.value});
+    });
     this.lasers.addEventListener('change', () => {
       onLasers(this.lasers.checked);
       this.command('lasers', {on: this.lasers.checked});
@@ -88,7 +94,7 @@ export class Toolbar {
     this.simTime.textContent = formatSimTime(status.sim_time);
     this.simTime.dataset.seconds = String(status.sim_time);
     this.rtf.textContent = status.rtf == null ? (status.paused ? 'paused' : '–') : status.rtf.toFixed(2);
-    if (document.activeElement !== this.target) {
+    if (!this.editing && document.activeElement !== this.target) {
       this.target.value = status.target > 0 ? String(+status.target.toFixed(3)) : '0';
     }
   }

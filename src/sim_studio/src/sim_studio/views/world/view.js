@@ -101,12 +101,21 @@ export default function mount(root, studio) {
       const o = world.links.get(link);
       return o && o.visible ? [o.position.x, o.position.y, o.position.z] : null;
     },
+    rayCount: () => {
+      let n = 0;
+      for (const lines of rays.sensors.values()) {
+        const position = lines.geometry.getAttribute('position');
+        if (lines.visible && position) n += position.count / 2;
+      }
+      return n;
+    },
     select: (model) => drag.select(model, true),
     selected: () => drag.selected,
     dragTo: (model, x, y) => drag.dragTo(model, x, y),
     whenAt: (link, x, y, tolerance = 0.001) => new Promise((resolve) => watches.push({link, x, y, tolerance, resolve})),
     stats: () => ({...world.stats, at: performance.now()}),
     setContinuous: (on) => { world.continuous = on; },
+    scene3d: () => world,  // the WorldScene itself, for experiments from the console
     screenPosition: (model) => {
       const box = world.modelBox(model);
       if (box.isEmpty()) return null;
