@@ -97,10 +97,11 @@ export default function mount(element, studio) {
   });
 
   async function echo(topic) {
+    if (topic === echoTopic) topic = null;  // the echoed topic clicked again: echo nothing
     try {
       await studio.request('echo', {topic});
       echoTopic = topic;
-      echoTitle.textContent = `Echo: ${topic} (waiting for a message)`;
+      echoTitle.textContent = topic ? `Echo: ${topic} (waiting for a message)` : 'Echo: click a topic';
       for (const [name, entry] of rows) entry.row.classList.toggle('selected', name === topic);
       clear(echoBody);
     } catch (e) {
