@@ -18,9 +18,13 @@ export default function mount(element, studio) {
   let since = performance.now();
   let fps = 0;
 
+  let listed = '';
   async function listTopics() {
     try {
       const reply = await studio.request('topics');
+      const names = JSON.stringify(reply.topics);
+      if (names === listed) return;  // unchanged: keep the options (and what is being chosen)
+      listed = names;
       const chosen = topic.value;
       clear(topic).append(el('option', {value: ''}, '(choose an image topic)'));
       for (const t of reply.topics) topic.append(el('option', {value: t.name}, `${t.name} (${t.type.split('/')[1]})`));
