@@ -34,7 +34,7 @@ export class LaserRays {
   show(on) {
     this.visible = on;
     for (const lines of this.sensors.values()) lines.visible = on;
-    this.world.dirty = true;
+    this.world.requestRender();
   }
 
   setScan(scan) {
@@ -48,6 +48,6 @@ export class LaserRays {
     });
     lines.geometry.setAttribute('position', new THREE.Float32BufferAttribute(points, 3));
     lines.geometry.computeBoundingSphere();
-    this.world.dirty = true;
+    this.world.requestRender();
   }
 }

@@ -28,7 +28,7 @@ export class ModelDrag {
     this.transform = new TransformControls(world.camera, world.renderer.domElement);
     this.transform.showZ = false;
     this.transform.setSpace('world');
-    this.transform.addEventListener('change', () => { world.dirty = true; });
+    this.transform.addEventListener('change', () => { world.requestRender(); });
     this.transform.addEventListener('dragging-changed', (event) => {
       world.controls.enabled = !event.value;
       if (event.value) this.begin(); else this.release();
@@ -61,7 +61,7 @@ export class ModelDrag {
       this.transform.detach();
       this.highlight.visible = false;
     }
-    this.world.dirty = true;
+    this.world.requestRender();
     if (fromHere) this.studio.bus.dispatchEvent(new CustomEvent('select', {detail: {model, source: 'world'}}));
   }
 
@@ -72,7 +72,7 @@ export class ModelDrag {
     if (!this.highlight.box.equals(box)) {
       this.highlight.box.copy(box);
       this.highlight.visible = true;
-      this.world.dirty = true;
+      this.world.requestRender();
     }
     if (!this.drag) {
       const centre = box.getCenter(new THREE.Vector3());

@@ -114,7 +114,7 @@ export default function mount(root, studio) {
     dragTo: (model, x, y) => drag.dragTo(model, x, y),
     whenAt: (link, x, y, tolerance = 0.001) => new Promise((resolve) => watches.push({link, x, y, tolerance, resolve})),
     stats: () => ({...world.stats, at: performance.now()}),
-    setContinuous: (on) => { world.continuous = on; },
+    setContinuous: (on) => world.setContinuous(on),
     scene3d: () => world,  // the WorldScene itself, for experiments from the console
     screenPosition: (model) => {
       const box = world.modelBox(model);

@@ -1,9 +1,9 @@
 // The 3D scene: renderer, camera, orbit controls, lights, grid and ground, one Object3D per
 // link (named "model::link", placed in the world by pose_info) holding its visuals.
 //
-// It draws only when something changed (poses, the camera, a mesh loaded), so a still world
-// costs the machine nothing; `continuous` draws every animation frame (the benchmark's
-// capacity measure).
+// It draws only when something changed (poses, the camera, a mesh loaded: requestRender()), so
+// a still world costs the machine nothing; `continuous` draws every animation frame (the
+// benchmark's capacity measure).
 
 import * as THREE from '/vendor/three/build/three.module.js';
 import {OrbitControls} from '/vendor/three/examples/jsm/controls/OrbitControls.js';
@@ -30,7 +30,8 @@ export class WorldScene {
     this.container = container;
     this.onError = onError;
     const software = softwareRenderer();
-    this.renderer = new THREE.WebGLRenderer({antialias: !software});
+    // Opaque, no stencil: the compositor need not blend the canvas, nor the renderer keep a buffer it never uses.
+    this.renderer = new THREE.WebGLRenderer({antialias: !software, alpha: false, stencil: false});
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, software ? 1 : MAX_PIXEL_RATIO));
     this.renderer.setClearColor(0xc9d6e3);
     container.appendChild(this.renderer.domElement);
@@ -40,7 +41,7 @@ export class WorldScene {
     this.camera.up.set(0, 0, 1);
     this.camera.position.set(5, -5, 3);
     this.controls = new OrbitControls(this.camera, this.renderer.domElement);
-    this.controls.addEventListener('change', () => { this.dirty = true; });
+    this.controls.addEventListener('change', () => this.requestRender());
 
     this.scene.add(new THREE.HemisphereLight(0xffffff, 0x606060, 0.75));
     const sun = new THREE.DirectionalLight(0xffffff, 0.6);
@@ -60,26 +61,36 @@ export class WorldScene {
     this.indexed = [];           // pose_info's order -> Object3D
     this.models = new Map();     // model -> [link Object3D]
     this.visualCount = 0;
-    this.dirty = true;
     this.continuous = false;
     this.afterRender = [];       // callbacks(timestamp) after each drawn frame
-    this.stats = {frames: 0, renders: 0, poseFrames: 0};
+    this.stats = {renders: 0, poseFrames: 0};
     this.fitted = false;
+    this.scheduled = false;
 
     new ResizeObserver(() => this.resize()).observe(container);
     this.resize();
-    const tick = () => {
-      this.stats.frames += 1;
-      if (this.dirty || this.continuous) {
-        this.dirty = false;
-        this.renderer.render(this.scene, this.camera);
-        this.stats.renders += 1;
-        const now = performance.timeOrigin + performance.now();
-        for (const callback of this.afterRender) callback(now);
-      }
-      requestAnimationFrame(tick);
-    };
-    requestAnimationFrame(tick);
+  }
+
+  // A frame is asked for only when something changed: a page whose world stands still asks the
+  // browser for no animation frames at all (each one wakes its compositor; 0.2 cores idle here).
+  requestRender() {
+    if (this.scheduled) return;
+    this.scheduled = true;
+    requestAnimationFrame(() => this.draw());
+  }
+
+  draw() {
+    this.scheduled = false;
+    this.renderer.render(this.scene, this.camera);
+    this.stats.renders += 1;
+    const now = performance.timeOrigin + performance.now();
+    for (const callback of this.afterRender) callback(now);
+    if (this.continuous) this.requestRender();
+  }
+
+  setContinuous(on) {
+    this.continuous = on;
+    this.requestRender();
   }
 
   resize() {
@@ -88,7 +99,7 @@ export class WorldScene {
     this.renderer.setSize(width, height);
     this.camera.aspect = width / height;
     this.camera.updateProjectionMatrix();
-    this.dirty = true;
+    this.requestRender();
   }
 
   link(name) {
@@ -119,7 +130,7 @@ export class WorldScene {
       link.userData.model = visual.model;
       link.add(makeVisual(visual, (error) => {
         if (error) this.onError(error);
-        this.dirty = true;
+        this.requestRender();
       }));
     }
     for (const [name, object] of this.links) {
@@ -131,7 +142,7 @@ export class WorldScene {
     // The ground plane drawn here only where the world has none of its own: every pixel of a
     // second ground costs a frame on a CPU renderer.
     this.ground.visible = !scene.visuals.some((v) => v.type === 'box' && v.scale[0] >= 50 && v.scale[1] >= 50);
-    this.dirty = true;
+    this.requestRender();
   }
 
   // A "poses" message: names (when they changed) and [index, x, y, z, qx, qy, qz, qw, ...].
@@ -151,7 +162,7 @@ export class WorldScene {
       object.visible = true;
     }
     this.stats.poseFrames += 1;
-    this.dirty = true;
+    this.requestRender();
     if (!this.fitted && this.visualCount > 0) this.fit();
   }
 
