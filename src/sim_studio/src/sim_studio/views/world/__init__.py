@@ -21,6 +21,7 @@ from visualization_msgs.msg import MarkerArray
 
 from sim_studio import request_fields
 from sim_studio.gazebo import GazeboServices
+from sim_studio.subscription import typed
 from sim_studio.view import View
 from sim_studio.views.world import scene as scene_info
 from sim_studio.views.world.laser_rays import LaserRays
@@ -88,7 +89,9 @@ class WorldView(View):
         self.frames = PoseFrames()
 
     # --- the scene and the poses (rospy threads hand over to the server's loop) ---------------
+    # typed(): another view may have subscribed the topic first with rospy.AnyMsg (subscription.py)
     def _on_scene(self, markers):
+        markers = typed(markers, MarkerArray)
         scene, meshes = scene_info.read_scene(markers.markers)
         for text in scene["skipped"]:
             log.warning("sim_studio world: %s", text)
@@ -101,6 +104,7 @@ class WorldView(View):
         self.studio.broadcast(self._scene)
 
     def _on_poses(self, states):
+        states = typed(states, LinkStates)
         self.studio.call_soon(self._poses_arrived, states.name, states.pose)
 
     def _poses_arrived(self, names, poses):

@@ -8,6 +8,8 @@ import time
 import rospy
 from sensor_msgs.msg import LaserScan
 
+from sim_studio.subscription import typed
+
 SCANS_PER_S = 10.0
 RANGE_DIGITS = 3  # mm
 
@@ -60,6 +62,7 @@ class LaserRays:
             if now - self._last.get(topic, 0.0) < 1.0 / SCANS_PER_S:
                 return
             self._last[topic] = now
+        scan = typed(scan, LaserScan)  # decoded here if another view subscribed it undecoded first
         self._studio.call_soon(self._send, topic, scan_message(self._view, topic, scan))
 
     def _send(self, topic, message):
