@@ -19,6 +19,11 @@ what the topics cost is the ratio of that, with over without. Output:
   studio topics: real-time factor without A (median), with B (median); median of the rounds' ratios R
   studio topics: simulator CPU per sim second without P ms (median), with Q ms (median); median of the rounds' ratios S
   studio topics cost: C % of the real-time factor, D % more simulator CPU per sim second  (target < 5 %)
+Then, with the simulation paused, bullet_sim/bench_studio_messages times what one message costs to
+build and serialize in the same world (its world file and the launch's robot, table and can
+descriptions), and the wall clock read each step makes while pose_info has a subscriber:
+  pose_info: X us to build and serialize one message (B bytes) ...
+  studio topics' own work: W ms per wall second at 60 Hz and F steps/s = P % of one core
 Every process it starts is stopped at the end, also on errors and Ctrl-C.
 """
 import argparse
@@ -91,6 +96,34 @@ def window(procs, index, with_subscriber, seconds, simulator):
     return ('with' if with_subscriber else 'without'), start, end, rate, cpu_end - cpu_start
 
 
+def message_costs(procs, steps_per_second):
+    """bench_studio_messages on this bring-up's world; prints its figures and what they add up to."""
+    import re
+    import subprocess
+
+    import rospkg
+    import rospy
+    from std_srvs.srv import Empty
+    rospy.ServiceProxy('/gazebo/pause_physics', Empty)()
+    files = []
+    for name, copies in (('robot_description', 1), ('table_description', 1), ('can_description', 3)):
+        path = os.path.join(procs.log_dir, name + '.urdf')
+        with open(path, 'w') as f:
+            f.write(rospy.get_param('/' + name))
+        files += [path] * copies
+    world = os.path.join(rospkg.RosPack().get_path('katana_arm_gazebo'), 'worlds', 'katana.world')
+    done = subprocess.run(['rosrun', 'bullet_sim', 'bench_studio_messages', world] + files,
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=120)
+    if done.returncode != 0:
+        raise RuntimeError('bench_studio_messages failed:\n' + done.stdout[-2000:])
+    print(done.stdout.strip())
+    pose_us = float(re.search(r'pose_info: ([0-9.]+) us', done.stdout).group(1))
+    clock_ns = float(re.search(r'wall clock read: ([0-9.]+) ns', done.stdout).group(1))
+    per_second = 60 * pose_us * 1e-3 + steps_per_second * clock_ns * 1e-6  # ms of work per wall second
+    print('studio topics\' own work: %.2f ms per wall second at 60 Hz and %.0f steps/s = %.2f %% of one core '
+          '(roscpp\'s send of each message not counted)' % (per_second, steps_per_second, per_second / 10))
+
+
 def run(args, procs):
     models = bring_up(procs)
     simulator = simulator_pid(procs)
@@ -127,6 +160,8 @@ def run(args, procs):
                                                       median(cpu_ratios), min(cpu_ratios), max(cpu_ratios)))
     print('studio topics cost: %.1f %% of the real-time factor, %.1f %% more simulator CPU per sim second  '
           '(target < 5 %%)' % (100 * (1 - median(rtf_ratios)), 100 * (median(cpu_ratios) - 1)))
+    sys.stdout.flush()
+    message_costs(procs, 1000 * median(rtf['with']))  # 1 ms steps
     sys.stdout.flush()
 
 
