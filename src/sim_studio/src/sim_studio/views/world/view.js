@@ -70,7 +70,8 @@ export default function mount(root, studio) {
     studio.bus.dispatchEvent(new CustomEvent('view-centre', {detail: {x: t.x, y: t.y, z: t.z}}));
   });
 
-  // Latency: when a link is first drawn within `tolerance` of (x, y); wall-clock milliseconds.
+  // Latency: when a link is first drawn within `tolerance` of (x, y), and when the poses that
+  // put it there arrived; wall-clock milliseconds.
   const watches = [];
   world.afterRender.push((now) => {
     for (let i = watches.length - 1; i >= 0; i -= 1) {
@@ -78,7 +79,7 @@ export default function mount(root, studio) {
       const object = world.links.get(link);
       if (object && object.visible && Math.hypot(object.position.x - x, object.position.y - y) <= tolerance) {
         watches.splice(i, 1);
-        resolve(now);
+        resolve({drawn: now, arrived: world.posesAppliedAt});
       }
     }
   });

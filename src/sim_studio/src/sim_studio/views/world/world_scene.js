@@ -164,6 +164,7 @@ export class WorldScene {
       object.visible = true;
     }
     this.stats.poseFrames += 1;
+    this.posesAppliedAt = performance.timeOrigin + performance.now();  // for the latency's breakdown
     this.requestRender();
     if (!this.fitted && this.visualCount > 0) this.fit();
   }
