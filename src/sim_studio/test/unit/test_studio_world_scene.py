@@ -70,7 +70,7 @@ def test_a_page_gets_names_once_then_only_what_moved():
     frames.update(["a::l", "b::l"], poses(1.0, 2.5))
     frames.update(["a::l", "b::l"], poses(1.0, 3.0))  # the page was slow: it gets the newest
     assert page.next_frame(frames) == {"seq": 3, "poses": [1, 3.0, 0, 0, 0, 0, 0, 1.0]}
-    frames.update(["a::l", "b::l"], poses(1.000001, 3.0))  # below a hundredth of a millimetre
+    frames.update(["a::l", "b::l"], poses(1.00004, 3.0))  # below a tenth of a millimetre
     assert page.next_frame(frames) is None
     frames.update(["b::l"], poses(3.0))  # a model went: names again, every pose
     assert page.next_frame(frames) == {"seq": 5, "names": ["b::l"], "poses": [0, 3.0, 0, 0, 0, 0, 0, 1.0]}

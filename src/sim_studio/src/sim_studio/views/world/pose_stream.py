@@ -6,8 +6,12 @@ frame, however slow the page) of only the links that moved since what it was las
 still world costs neither the connection nor the page's renderer anything. Pure: no ROS calls.
 """
 
-POSITION_DIGITS = 5  # 0.01 mm: below what a page can show, and what a resting body jitters by
-ROTATION_DIGITS = 6
+# A link moved when it moved by a tenth of a millimetre, or turned by about 0.01 degrees: far
+# below a pixel at any useful zoom, and above what a body held still by a controller jitters by
+# when the simulator runs flat out (at 0.01 mm the Katana world's page drew 3-5 frames a second
+# of its arm at rest, each frame costing both cores a burst of CPU on a CPU renderer).
+POSITION_DIGITS = 4
+ROTATION_DIGITS = 4
 
 
 class PoseFrames:
