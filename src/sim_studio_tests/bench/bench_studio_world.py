@@ -2,7 +2,7 @@
 """The World view's benchmark (issue 35): frame rate, pose latency and the simulator's slow-down,
 in Debian's headless Chromium on this machine, for the Katana world and the Capstone maze.
 
-  src/sim_studio/bench/bench_studio_world.py [--worlds katana,maze] [--seconds 10] [--moves 50]
+  src/sim_studio_tests/bench/bench_studio_world.py [--worlds katana,maze] [--seconds 10] [--moves 50]
                                              [--rounds 10] [--rtf-seconds 4]
 
 Each world runs in a roslaunch of its own (bench/studio_world_bench.launch: the world and the
@@ -37,7 +37,7 @@ import threading
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-COMMAND = "src/sim_studio/bench/bench_studio_world.py"
+COMMAND = "src/sim_studio_tests/bench/bench_studio_world.py"
 EXPECTED = {"katana": ["table", "katana", "can_1", "can_2", "can_3"], "maze": ["Capstone_Map", "m_robot"]}
 BOX_SPOT = {"katana": (1.5, -1.5), "maze": (2.5, -1.5)}  # free ground, in view
 BOX_SDF = """<?xml version="1.0"?><sdf version="1.6"><model name="bench_box"><static>true</static>
