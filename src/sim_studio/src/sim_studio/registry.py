@@ -19,6 +19,9 @@ def view_folders():
 
 def load_views(studio, only=None):
     """One instance of each view (or of those named in `only`), ordered by slot and order."""
+    unknown = sorted(set(only or ()) - set(view_folders()))
+    if unknown:
+        raise ValueError("no view named %s (there are: %s)" % (", ".join(unknown), ", ".join(sorted(view_folders()))))
     made = []
     for name in sorted(view_folders()):
         if only and name not in only:

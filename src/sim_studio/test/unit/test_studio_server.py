@@ -116,3 +116,11 @@ def test_a_taken_port_is_reported_and_the_next_server_can_try_again(tmp_path):
         await second.stop()
         await first.stop()
     asyncio.run(run())
+
+
+def test_an_unknown_view_name_is_refused_with_the_names_there_are():
+    from sim_studio.registry import load_views, view_folders
+    with pytest.raises(ValueError) as refused:
+        load_views(None, ["world", "wrold"])
+    assert "no view named wrold" in str(refused.value) and "world" in str(refused.value).split("there are:")[1]
+    assert {"world", "models", "joints", "topics", "plot", "publisher", "graph", "images"} <= set(view_folders())
