@@ -16,3 +16,11 @@ export function clear(node) {
   while (node.firstChild) node.removeChild(node.firstChild);
   return node;
 }
+
+// The same with two shorthands: {class: ...} and {text: ...} (the element's text).
+export function element(tag, attributes = {}, ...children) {
+  const {text, ...rest} = attributes;
+  const node = el(tag, rest, ...children);
+  if (text !== undefined) node.textContent = text;
+  return node;
+}

@@ -3,19 +3,12 @@
 // a value takes effect as soon as it is entered (the input's change: Enter or leaving the field)
 // and stays until changed or Reset; a gain changed before its target was set waits for the
 // target. Gazebo's default gains: P 1, I 0.1, D 0.01.
+import {element} from '/dom.js';
 
 const POLL_MS = 250;
 const DEFAULT_GAINS = {p: 1, i: 0.1, d: 0.01};
 const TABS = ['force', 'position', 'velocity'];
 
-function element(tag, attributes = {}, ...children) {
-  const e = document.createElement(tag);
-  for (const [key, value] of Object.entries(attributes)) {
-    if (key === 'class') e.className = value; else if (key === 'text') e.textContent = value; else e.setAttribute(key, value);
-  }
-  for (const child of children) e.append(child);
-  return e;
-}
 
 function units(type) {
   const linear = type === 'prismatic';

@@ -1,17 +1,10 @@
 // Models: the tree of models -> links and joints, the selected model's properties, delete and
 // insert. The selection is shared on the bus ("select", detail {model, source}), so a click
 // here selects in the World and Joints views and a click in the World selects here.
+import {element} from '/dom.js';
 
 const STATE_PERIOD_MS = 250;  // the selected model's pose, twist and joints, a few times a second
 
-function element(tag, attributes = {}, ...children) {
-  const e = document.createElement(tag);
-  for (const [key, value] of Object.entries(attributes)) {
-    if (key === 'class') e.className = value; else if (key === 'text') e.textContent = value; else e.setAttribute(key, value);
-  }
-  for (const child of children) e.append(child);
-  return e;
-}
 
 // -0.000 reads as a sign where there is none: values that round to zero show as 0.
 const fixed = (values, digits = 3) => values.map((v) => (v == null ? '–' : (Math.abs(v) < 0.5 * 10 ** -digits ? 0 : v).toFixed(digits))).join('  ');

@@ -1,14 +1,7 @@
 // Gazebo's toolbar and status bar in one row above the world: play / pause, step, sim time,
 // the real-time factor (measured) and its target, reset world, reset time, and the lasers tick.
+import {element} from '/dom.js';
 
-function element(tag, attributes = {}, ...children) {
-  const e = document.createElement(tag);
-  for (const [key, value] of Object.entries(attributes)) {
-    if (key === 'class') e.className = value; else if (key === 'text') e.textContent = value; else e.setAttribute(key, value);
-  }
-  for (const child of children) e.append(child);
-  return e;
-}
 
 // Gazebo's icons as inline SVG: the play / pause / step glyphs are missing from many fonts.
 const ICONS = {
