@@ -4,7 +4,9 @@
 #include <gazebo_msgs/ModelStates.h>
 #include <tinyxml2.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "bullet_sim/pose_info.h"
 #include "bullet_sim_core/description_error.h"
@@ -44,6 +46,7 @@ GazeboRosApi::GazeboRosApi(Simulator& sim) : sim_(sim), node_("/gazebo"), reconf
       n.advertiseService("set_link_state", &GazeboRosApi::setLinkState, this),
       n.advertiseService("get_model_properties", &GazeboRosApi::getModelProperties, this),
       n.advertiseService("get_joint_properties", &GazeboRosApi::getJointProperties, this),
+      n.advertiseService("get_link_properties", &GazeboRosApi::getLinkProperties, this),
       n.advertiseService("get_world_properties", &GazeboRosApi::getWorldProperties, this),
       n.advertiseService("get_physics_properties", &GazeboRosApi::getPhysicsProperties, this),
       n.advertiseService("set_physics_properties", &GazeboRosApi::setPhysicsProperties, this),
@@ -54,6 +57,7 @@ GazeboRosApi::GazeboRosApi(Simulator& sim) : sim_(sim), node_("/gazebo"), reconf
       n.advertiseService("set_model_configuration", &GazeboRosApi::setModelConfiguration, this),
       n.advertiseService("pause_physics", &GazeboRosApi::pausePhysics, this),
       n.advertiseService("unpause_physics", &GazeboRosApi::unpausePhysics, this),
+      n.advertiseService("step_world", &GazeboRosApi::stepWorld, this),  // ours: gzclient's step button
       n.advertiseService("reset_simulation", &GazeboRosApi::resetSimulation, this),
       n.advertiseService("reset_world", &GazeboRosApi::resetWorld, this),
   };
@@ -341,6 +345,36 @@ bool GazeboRosApi::getModelProperties(gazebo_msgs::GetModelProperties::Request& 
   return true;
 }
 
+// The link's <inertial> as its description gives it (a moving link given none reports mass 0;
+// the simulator moves it with a small substitute, and said so when it was spawned).
+bool GazeboRosApi::getLinkProperties(gazebo_msgs::GetLinkProperties::Request& req,
+                                     gazebo_msgs::GetLinkProperties::Response& res) {
+  auto [model_name, link_name] = splitScoped(req.link_name);
+  const PhysicsModel* model = sim_.physics().findModel(model_name);
+  const LinkDescription* link = nullptr;
+  if (model && !link_name.empty())
+    for (const LinkDescription& l : model->description().links)
+      if (l.name == link_name) link = &l;
+  if (!link) {
+    res.success = false;
+    res.status_message = "GetLinkProperties: link [" + req.link_name + "] does not exist (expected 'model::link')";
+    return true;
+  }
+  const Inertial& inertial = link->inertial;
+  res.com = toPoseMsg(inertial.origin);
+  res.gravity_mode = link->gravity;
+  res.mass = inertial.mass;
+  res.ixx = inertial.inertia(0, 0);
+  res.ixy = inertial.inertia(0, 1);
+  res.ixz = inertial.inertia(0, 2);
+  res.iyy = inertial.inertia(1, 1);
+  res.iyz = inertial.inertia(1, 2);
+  res.izz = inertial.inertia(2, 2);
+  res.success = true;
+  res.status_message = "GetLinkProperties: got properties";
+  return true;
+}
+
 bool GazeboRosApi::getJointProperties(gazebo_msgs::GetJointProperties::Request& req,
                                       gazebo_msgs::GetJointProperties::Response& res) {
   auto [model_name, joint_name] = splitScoped(req.joint_name);
@@ -433,6 +467,16 @@ bool GazeboRosApi::pausePhysics(std_srvs::Empty::Request&, std_srvs::Empty::Resp
 }
 bool GazeboRosApi::unpausePhysics(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
   sim_.setPaused(false);
+  return true;
+}
+// Called between steps (the loop runs callbacks there), so the steps run here, now, and the
+// caller's reply carries the time after them.
+bool GazeboRosApi::stepWorld(bullet_sim_msgs::StepWorld::Request& req, bullet_sim_msgs::StepWorld::Response& res) {
+  sim_.setPaused(true);
+  sim_.runSteps(static_cast<int>(std::min<uint32_t>(req.steps, std::numeric_limits<int>::max())));
+  res.sim_time = sim_.now().toSec();
+  res.success = true;
+  res.status_message = "StepWorld: " + std::to_string(req.steps) + " step(s) run, paused";
   return true;
 }
 bool GazeboRosApi::resetSimulation(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {

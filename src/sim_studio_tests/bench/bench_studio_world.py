@@ -17,8 +17,8 @@ studio; its own master), measured by a child process of this script:
   at the new spot (window.studio.world.whenAt), against the wall time just before the call.
 - Slow-down: the simulator unthrottled (max_update_rate 0), its real-time factor over
   --rtf-seconds with the browser away from the page (about:blank) and on it (drawing as it does
-  by default), alternating --rounds times, then with the page drawing every frame (the worst
-  case). Each page window is compared with the windows either side of it (1 - page / none); the
+  by default), alternating --rounds times, with the world at rest and then moving (as above,
+  the sweep timed in sim time), then with the page drawing every frame (the worst case). Each page window is compared with the windows either side of it (1 - page / none); the
   median and quartiles of those, since other work on the machine comes and goes.
 
 Targets: >= 30 frames a second, < 100 ms latency, <= 5 % slow-down. The machine is shared: the
@@ -218,7 +218,9 @@ class Motion:
             goal.points = [JointTrajectoryPoint(positions=target, time_from_start=rospy.Duration(2.0))]
             self.publisher.publish(goal)
             sign = -sign
-            self.stop_flag.wait(2.2)
+            until = rospy.get_time() + 2.2  # sim time: the sweep keeps the arm moving at any pace
+            while rospy.get_time() < until and not self.stop_flag.wait(0.01):
+                pass
 
 
 def latency(world, moves):
@@ -266,9 +268,28 @@ def percentile(values, share):
 
 def slowdown_runs(world, seconds, rounds):
     """The unthrottled real-time factor with the page away (the browser on about:blank) and with
-    it shown, alternating `rounds` times so that the machine's other load falls on both; then
-    with the page drawing every frame. The slow-down pairs each page window with the mean of
-    the windows around it."""
+    it shown, alternating `rounds` times so that the machine's other load falls on both, first
+    with the world at rest and then moving (Motion); then with the page drawing every frame.
+    The slow-down pairs each page window with the mean of the windows around it."""
+    result = alternate(world, seconds, rounds)
+    with Motion(world):
+        time.sleep(1.0)
+        moving = alternate(world, seconds, rounds)
+    result.update({key + "_moving": value for key, value in moving.items()})
+    world.driver.get("about:blank")
+    time.sleep(2.0)
+    none = world.rtf(seconds)
+    from studio_browser import open_studio
+    open_studio(world.driver, world.url())
+    time.sleep(2.0)
+    world.js("(window.studio.world.setContinuous(true), true)")
+    time.sleep(1.0)
+    every_frame = world.rtf(seconds)
+    result.update(rtf_page_every_frame=every_frame, slowdown_every_frame=1.0 - every_frame / none)
+    return result
+
+
+def alternate(world, seconds, rounds):
     none, page, drawn = [], [], []
     cpu_none, cpu_page = {}, {}
     url = world.url()
@@ -287,16 +308,10 @@ def slowdown_runs(world, seconds, rounds):
     world.driver.get("about:blank")
     time.sleep(2.0)
     none.append(world.rtf(seconds))
-    open_studio(world.driver, url)
-    time.sleep(2.0)
-    world.js("(window.studio.world.setContinuous(true), true)")
-    time.sleep(1.0)
-    every_frame = world.rtf(seconds)
     ratios = [p / ((none[i] + none[i + 1]) / 2) for i, p in enumerate(page)]
-    return {"rtf_none": none, "rtf_page": page, "page_frames": drawn, "rtf_page_every_frame": every_frame,
+    return {"rtf_none": none, "rtf_page": page, "page_frames": drawn,
             "slowdown": 1.0 - statistics.median(ratios), "slowdown_q1": 1.0 - percentile(ratios, 0.75),
             "slowdown_q3": 1.0 - percentile(ratios, 0.25),
-            "slowdown_every_frame": 1.0 - every_frame / statistics.median(none),
             "cpu_none": {k: statistics.median(v) for k, v in cpu_none.items()},
             "cpu_page": {k: statistics.median(v) for k, v in cpu_page.items()}}
 
@@ -350,6 +365,14 @@ def report(results, argv):
         print("  cores used (medians), no page / page: simulator %.2f / %.2f, studio %.3f / %.3f, browser %.3f / %.3f"
               % (r["cpu_none"]["simulator"], r["cpu_page"]["simulator"], r["cpu_none"]["studio"],
                  r["cpu_page"]["studio"], r["cpu_none"]["browser"], r["cpu_page"]["browser"]))
+        print("  world moving: unthrottled RTF, no page %s" % ", ".join("%.1f" % v for v in r["rtf_none_moving"]))
+        print("  world moving: unthrottled RTF, page    %s  (page frames/s %s)" % (
+            ", ".join("%.1f" % v for v in r["rtf_page_moving"]), ", ".join("%.1f" % v for v in r["page_frames_moving"])))
+        print("  world moving: slow-down with one page: median %.1f %% (quartiles %.1f, %.1f %%; target <= 5 %%)"
+              % (100 * r["slowdown_moving"], 100 * r["slowdown_q1_moving"], 100 * r["slowdown_q3_moving"]))
+        print("  world moving: cores used, no page / page: simulator %.2f / %.2f, studio %.3f / %.3f, browser %.3f / %.3f"
+              % (r["cpu_none_moving"]["simulator"], r["cpu_page_moving"]["simulator"], r["cpu_none_moving"]["studio"],
+                 r["cpu_page_moving"]["studio"], r["cpu_none_moving"]["browser"], r["cpu_page_moving"]["browser"]))
         print("  unthrottled RTF, page drawing always: %.1f  -> slow-down %.1f %%"
               % (r["rtf_page_every_frame"], 100 * r["slowdown_every_frame"]))
     print("\nreproduce: %s %s" % (COMMAND, " ".join(argv)))

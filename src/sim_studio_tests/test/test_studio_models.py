@@ -8,7 +8,8 @@ simulator's, and insert, select and delete do to the simulator what they say.
   view show it; a second box is unit_box_0.
 - Insert a model the simulator refuses (broken_box, a box with two sizes): the simulator's
   status_message is shown and nothing is spawned.
-- Select in the tree: the properties show the pose get_model_state gives (1 mm). Delete: gone
+- Select in the tree: the properties show the pose get_model_state gives (1 mm) and the box's mass,
+  1 kg as Gazebo's inserted shapes have (get_link_properties). Delete: gone
   from the simulator, the tree and the 3D view.
 """
 import os
@@ -116,6 +117,8 @@ class StudioModels(unittest.TestCase):
         shown = [float(v) for v in self.css("#models-position").text.split()]
         for i, value in enumerate((p.x, p.y, p.z)):
             self.assertAlmostEqual(shown[i], value, delta=1e-3)
+        mass = self.css("#models-links tr[data-link='link'] .mass").text
+        self.assertAlmostEqual(float(mass), 1.0, delta=1e-3)
         visuals = self.driver.execute_script("return window.studio.world.visualObjects()")
         self.css("#models-delete").click()
         self.assertTrue(wait_until(lambda: "unit_box" not in self.names(), 10.0), self.names())

@@ -7,6 +7,7 @@
 #include <gazebo_msgs/BodyRequest.h>
 #include <gazebo_msgs/DeleteModel.h>
 #include <gazebo_msgs/GetJointProperties.h>
+#include <gazebo_msgs/GetLinkProperties.h>
 #include <gazebo_msgs/GetLinkState.h>
 #include <gazebo_msgs/GetModelProperties.h>
 #include <gazebo_msgs/GetModelState.h>
@@ -21,6 +22,7 @@
 #include <gazebo_msgs/SpawnModel.h>
 #include <ros/ros.h>
 #include <std_srvs/Empty.h>
+#include <bullet_sim_msgs/StepWorld.h>
 
 #include <Eigen/Geometry>
 #include <vector>
@@ -72,6 +74,7 @@ class GazeboRosApi {
   void setLinkStateTopic(const gazebo_msgs::LinkState::ConstPtr& msg);
   bool getModelProperties(gazebo_msgs::GetModelProperties::Request& req, gazebo_msgs::GetModelProperties::Response& res);
   bool getJointProperties(gazebo_msgs::GetJointProperties::Request& req, gazebo_msgs::GetJointProperties::Response& res);
+  bool getLinkProperties(gazebo_msgs::GetLinkProperties::Request& req, gazebo_msgs::GetLinkProperties::Response& res);
   bool getWorldProperties(gazebo_msgs::GetWorldProperties::Request& req, gazebo_msgs::GetWorldProperties::Response& res);
   bool getPhysicsProperties(gazebo_msgs::GetPhysicsProperties::Request& req,
                             gazebo_msgs::GetPhysicsProperties::Response& res);
@@ -85,6 +88,7 @@ class GazeboRosApi {
                              gazebo_msgs::SetModelConfiguration::Response& res);
   bool pausePhysics(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
   bool unpausePhysics(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
+  bool stepWorld(bullet_sim_msgs::StepWorld::Request& req, bullet_sim_msgs::StepWorld::Response& res);
   bool resetSimulation(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
   bool resetWorld(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
 

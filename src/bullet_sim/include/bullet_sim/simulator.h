@@ -35,7 +35,7 @@ class Simulator {
   ~Simulator();
 
   void run();         // until ROS shuts down
-  void runSteps(int n);  // n steps now, ignoring pause and pacing (for tools and tests)
+  void runSteps(int n);  // n steps now, ignoring pause and pacing, then /clock (/gazebo/step_world)
 
   // Spawning goes through here so that sensors and plugins come with the model. Throws
   // DescriptionError naming the problem; nothing is added then. Both republish /gazebo/scene_info;

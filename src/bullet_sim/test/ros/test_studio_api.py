@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """What a client like sim_studio reads and sends, as it meets them: /gazebo/pose_info (every link's
 pose, at most 60 Hz of wall time, also while paused), /gazebo/scene_info (latched: every visual in its
-link's frame, the sensors' topics) and /gazebo/joint_cmd (Gazebo's joint control panel: a force, a
-position and a velocity target held every step). The simulator starts paused (see studio_api.test).
+link's frame, the sensors' topics), /gazebo/joint_cmd (Gazebo's joint control panel: a force, a
+position and a velocity target held every step), /gazebo/step_world (its step button) and
+/gazebo/get_link_properties (its masses). The simulator starts paused (see studio_api.test).
 
 The joint tests use the physics tests' pendulum (urdf/pendulum.urdf: 1 kg at 0.25 m below a hinge
 about y): hanging, gravity pulls it back with m g L sin(angle); spawned rolled 90 degrees its hinge
@@ -16,6 +17,7 @@ import unittest
 import rospy
 import rostest
 from bullet_sim_msgs.msg import JointCmd, Pid
+from bullet_sim_msgs.srv import StepWorld
 from gazebo_msgs.msg import LinkStates
 from geometry_msgs.msg import Pose
 from rosgraph_msgs.msg import Log
@@ -266,6 +268,53 @@ class StudioApiTest(unittest.TestCase):
         published = dict(rospy.get_published_topics())
         self.assertEqual(published.get('/mast_ns/scan'), 'sensor_msgs/LaserScan')
         self.assertEqual(published.get('/mast_ns/front/image_raw'), 'sensor_msgs/Image')
+
+    # --- /gazebo/step_world and /gazebo/get_link_properties ---------------------------------------
+
+    def test_step_world_runs_exactly_the_steps_asked_and_stays_paused(self):
+        self.assertTrue(self.gz.spawn_urdf('pendulum', PENDULUM, pose()).success)
+        self.gz.set_model_configuration(model_name='pendulum', urdf_param_name='', joint_names=['hinge'],
+                                        joint_positions=[0.5])
+        step_world = rospy.ServiceProxy('/gazebo/step_world', StepWorld)
+        dt = self.gz.get_physics_properties().time_step
+        start = self.gz.sim_time()
+        reply = step_world(steps=1)
+        self.assertTrue(reply.success, reply.status_message)
+        self.assertAlmostEqual(reply.sim_time - start, dt, delta=1e-9)
+        reply = step_world(steps=50)
+        self.assertAlmostEqual(reply.sim_time - start, 51 * dt, delta=1e-9)
+        # Gravity acted in those steps: from rest at 0.5 rad, the angle's acceleration is
+        # -m g L sin(0.5) / I, so after t = 0.051 s the rate is that times t (the angle moves
+        # 0.02 rad meanwhile: 2 % less; 10 % allowed).
+        _, rate = self.joint('pendulum::hinge')
+        expected = -PULL * math.sin(0.5) / INERTIA * 51 * dt
+        self.assertGreater(rate, 1.1 * expected)
+        self.assertLess(rate, 0.9 * expected)
+        time.sleep(0.3)
+        self.assertAlmostEqual(self.gz.sim_time(), reply.sim_time, delta=1e-9, msg="still paused")
+        # A running world is paused first; 0 steps only pauses.
+        self.gz.unpause_physics()
+        time.sleep(0.2)
+        reply = step_world(steps=0)
+        self.assertTrue(self.gz.get_physics_properties().pause)
+        self.assertAlmostEqual(self.gz.sim_time(), reply.sim_time, delta=1e-9)
+
+    def test_get_link_properties_gives_the_inertial_the_urdf_wrote(self):
+        self.assertTrue(self.gz.spawn_urdf('pendulum', PENDULUM, pose()).success)
+        bob = self.gz.get_link_properties(link_name='pendulum::bob')
+        self.assertTrue(bob.success, bob.status_message)
+        self.assertAlmostEqual(bob.mass, MASS, delta=1e-12)
+        self.assertAlmostEqual(bob.com.position.z, -ARM, delta=1e-12)
+        self.assertAlmostEqual(bob.com.orientation.w, 1.0, delta=1e-12)
+        for moment in (bob.ixx, bob.iyy, bob.izz):
+            self.assertAlmostEqual(moment, 1e-4, delta=1e-12)
+        self.assertEqual((bob.ixy, bob.ixz, bob.iyz), (0.0, 0.0, 0.0))
+        self.assertTrue(bob.gravity_mode)
+        self.assertAlmostEqual(self.gz.get_link_properties(link_name='pendulum::pivot').ixx, 0.01, delta=1e-12)
+        for bad in ('pendulum::nose', 'pendulum', 'nobody::bob'):
+            reply = self.gz.get_link_properties(link_name=bad)
+            self.assertFalse(reply.success, bad)
+            self.assertIn("[%s] does not exist" % bad, reply.status_message)
 
     # --- /gazebo/joint_cmd -----------------------------------------------------------------------
 

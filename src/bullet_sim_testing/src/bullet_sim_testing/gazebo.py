@@ -4,7 +4,8 @@ import time
 
 import rospy
 from gazebo_msgs.msg import ModelState
-from gazebo_msgs.srv import (ApplyBodyWrench, ApplyJointEffort, DeleteModel, GetJointProperties, GetLinkState,
+from gazebo_msgs.srv import (ApplyBodyWrench, ApplyJointEffort, DeleteModel, GetJointProperties, GetLinkProperties,
+                             GetLinkState,
                              GetModelProperties, GetModelState, GetPhysicsProperties, GetWorldProperties,
                              SetLinkState, SetModelConfiguration, SetModelState, SetPhysicsProperties, SpawnModel)
 from geometry_msgs.msg import Pose
@@ -30,6 +31,7 @@ class Gazebo:
         'set_physics_properties': SetPhysicsProperties, 'apply_joint_effort': ApplyJointEffort,
         'apply_body_wrench': ApplyBodyWrench, 'set_model_configuration': SetModelConfiguration,
         'get_joint_properties': GetJointProperties, 'get_model_properties': GetModelProperties,
+        'get_link_properties': GetLinkProperties,
         'set_link_state': SetLinkState, 'pause_physics': Empty, 'unpause_physics': Empty,
         'reset_world': Empty, 'reset_simulation': Empty,
     }

@@ -63,6 +63,7 @@ class Studio:
         app = web.Application(middlewares=[self._guard], client_max_size=MAX_MESSAGE_BYTES)
         app.router.add_route("GET", "/ws", self._websocket)
         app.router.add_route("GET", "/views.json", self._view_list)
+        app.router.add_route("GET", "/status.json", self._status)
         for view in self.views.values():
             for method, path, handler in view.routes():
                 app.router.add_route(method, "/api/%s/%s" % (view.name, path.lstrip("/")), handler)
@@ -106,6 +107,10 @@ class Studio:
 
     async def _view_list(self, request):
         return web.json_response([v.describe() for v in self.views.values()])
+
+    async def _status(self, request):
+        """How many pages are attached (each websocket is one page)."""
+        return web.json_response({"pages": len(self.clients)})
 
     async def _file(self, request):
         if request.method not in ("GET", "HEAD"):

@@ -60,9 +60,30 @@ def test_files_methods_and_traversal(tmp_path):
     serve(tmp_path, "", check)
 
 
+def test_status_counts_the_pages_attached_and_forgets_a_closed_one(tmp_path):
+    async def pages(session, base):
+        return json.loads((await status(session, "GET", base + "/status.json"))[1])["pages"]
+
+    async def check(session, base):
+        assert await pages(session, base) == 0
+        first = await session.ws_connect(base + "/ws")
+        second = await session.ws_connect(base + "/ws")
+        for ws in (first, second):
+            assert (await ws.receive_json())["type"] == "hello"
+        assert await pages(session, base) == 2
+        await first.close()
+        for _ in range(100):  # the server's side of the close runs on its loop
+            if await pages(session, base) == 1:
+                break
+            await asyncio.sleep(0.01)
+        assert await pages(session, base) == 1
+        await second.close()
+    serve(tmp_path, "", check)
+
+
 def test_everything_needs_the_token_when_one_is_set(tmp_path):
     async def check(session, base):
-        for path in ("/", "/views.json", "/ws", "/index.html?token=wrong"):
+        for path in ("/", "/views.json", "/status.json", "/ws", "/index.html?token=wrong"):
             assert (await status(session, "GET", base + path))[0] == 403, path
         with pytest.raises(aiohttp.WSServerHandshakeError) as refused:
             await session.ws_connect(base + "/ws")

@@ -95,11 +95,11 @@ export default function mount(root, studio) {
     row('roll pitch yaw', '', 'models-rpy');
     row('linear (m/s)', '', 'models-linear');
     row('angular (rad/s)', '', 'models-angular');
-    const links = element('table', {class: 'props'});
+    const links = element('table', {class: 'props', id: 'models-links'});
     links.append(element('tr', {}, element('th', {text: 'link'}), element('th', {text: 'mass (kg)'})));
     for (const l of details.links) {
       const mass = l.mass == null ? (details.masses ? '–' : 'n/a') : l.mass.toFixed(3);
-      links.append(element('tr', {}, element('td', {text: l.name}), element('td', {text: mass})));
+      links.append(element('tr', {'data-link': l.name}, element('td', {text: l.name}), element('td', {class: 'mass', text: mass})));
     }
     const joints = element('table', {class: 'props', id: 'models-joints'});
     joints.append(element('tr', {}, element('th', {text: 'joint'}), element('th', {text: 'type'}),

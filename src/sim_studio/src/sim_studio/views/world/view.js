@@ -1,6 +1,8 @@
 // World: the simulator's models in 3D with Gazebo's toolbar. The server sends the scene (every
 // visual in its link's frame) when models come or go, and the links' poses one frame at a time:
 // the page asks for the next frame once it has drawn the last, so it never falls behind.
+// On a CPU renderer it asks at most 30 times a second (a moving world's frames cost the cores
+// the simulator runs on); `?fps=N` in the URL sets that cap (0: every animation frame).
 //
 // window.studio.world is the way in for tests and the benchmark: visualCount(), meshesLoaded(),
 // dragTo(model, x, y), select(model), whenAt(link, x, y, tolerance), stats(), setContinuous(on).
@@ -11,6 +13,14 @@ import {LaserRays} from './laser_rays.js';
 import {Toolbar} from './toolbar.js';
 
 const CENTRE_PERIOD_MS = 250;
+const SOFTWARE_MAX_FPS = 30;
+
+// Pose frames a second the page asks for at most: ?fps=N, else 30 on a CPU renderer, else no cap.
+function maxFrameRate(software) {
+  const asked = Number.parseFloat(new URLSearchParams(location.search).get('fps'));
+  if (Number.isFinite(asked) && asked >= 0) return asked;
+  return software ? SOFTWARE_MAX_FPS : 0;
+}
 
 export default function mount(root, studio) {
   const style = document.createElement('link');
@@ -42,17 +52,24 @@ export default function mount(root, studio) {
     drag.select(drag.selected, false);  // re-attach: the model may have been spawned again
   });
 
-  // Poses: apply, and ask for the next frame once this one is on screen.
+  // Poses: apply, and ask for the next frame once this one is on screen (and the cap allows).
+  const minPeriodMs = maxFrameRate(world.software) > 0 ? 1000 / maxFrameRate(world.software) : 0;
   let frameDrawn = null;
+  let lastAsk = -Infinity;
   studio.on('poses', (message) => {
     world.applyPoses(message);
-    frameDrawn = () => studio.send('frame');
+    frameDrawn = () => {
+      lastAsk = performance.now();
+      studio.send('frame');
+    };
   });
   world.afterRender.push(() => {
     if (frameDrawn) {
       const ask = frameDrawn;
       frameDrawn = null;
-      ask();
+      const wait = lastAsk + minPeriodMs - performance.now();
+      if (wait > 1) setTimeout(ask, wait);
+      else ask();
     }
   });
   studio.on('scan', (message) => rays.setScan(message));
@@ -115,6 +132,7 @@ export default function mount(root, studio) {
     dragTo: (model, x, y) => drag.dragTo(model, x, y),
     whenAt: (link, x, y, tolerance = 0.001) => new Promise((resolve) => watches.push({link, x, y, tolerance, resolve})),
     stats: () => ({...world.stats, at: performance.now()}),
+    maxFrameRate: () => maxFrameRate(world.software),
     setContinuous: (on) => world.setContinuous(on),
     scene3d: () => world,  // the WorldScene itself, for experiments from the console
     screenPosition: (model) => {

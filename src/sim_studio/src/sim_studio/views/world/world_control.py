@@ -1,22 +1,15 @@
 """The toolbar's commands through /gazebo services: play, pause, step, reset world, reset time
 and the real-time factor target, and the physics state the toolbar shows.
 
-Gazebo's step button runs one physics step of a paused world. The simulator has no step
-service, so a step here is: pause (if running), slow the pace to STEP_RATE steps a second,
-unpause, pause again as soon as sim time has moved, and restore the pace. The slow pace leaves
-a quarter of a second for the pause to arrive; the simulator's loop runs its first two steps
-after an unpause back to back (its pacing starts counting after the first), so a step here is
-two physics steps.
+Gazebo's step button pauses the world and runs one physics step; the simulator does that on
+/gazebo/step_world (bullet_sim_msgs/StepWorld, docs/SIMULATOR.md), which upstream gazebo_ros
+has no counterpart for.
 """
 import asyncio
-import time
 
 from gazebo_msgs.srv import GetPhysicsProperties, GetWorldProperties, SetPhysicsProperties
+from bullet_sim_msgs.srv import StepWorld
 from std_srvs.srv import Empty
-
-STEP_RATE = 4.0         # steps per wall second while stepping
-STEP_TIMEOUT_S = 2.0
-
 
 def target_factor(properties):
     """The real-time factor the simulator paces to: max_update_rate steps of time_step each
@@ -63,20 +56,7 @@ class WorldControl:
         await self.gazebo.request("set_physics_properties", SetPhysicsProperties, time_step=props.time_step,
                                   max_update_rate=rate, gravity=props.gravity, ode_config=props.ode_config)
 
-    async def step(self):
-        """Pause, then let the simulator run a step (two, see above); the sim time after it."""
+    async def step(self, steps=1):
+        """Pause and run `steps` physics steps; the sim time after them."""
         async with self._lock:
-            await self.gazebo.request("pause_physics", Empty)
-            props = await self.physics()
-            before = await self.sim_time()
-            await self._set_rate(props, STEP_RATE)
-            try:
-                await self.gazebo.request("unpause_physics", Empty)
-                deadline = time.monotonic() + STEP_TIMEOUT_S
-                now = before
-                while now < before + props.time_step / 2 and time.monotonic() < deadline:
-                    now = await self.sim_time()
-                await self.gazebo.request("pause_physics", Empty)
-            finally:
-                await self._set_rate(props, props.max_update_rate)
-            return await self.sim_time()
+            return (await self.gazebo.request("step_world", StepWorld, steps=steps)).sim_time

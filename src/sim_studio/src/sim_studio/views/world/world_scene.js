@@ -32,6 +32,7 @@ export class WorldScene {
     this.container = container;
     this.onError = onError;
     const software = softwareRenderer();
+    this.software = software;
     // Opaque, no stencil: the compositor need not blend the canvas, nor the renderer keep a buffer it never uses.
     this.renderer = new THREE.WebGLRenderer({antialias: !software, alpha: false, stencil: false});
     this.renderer.setPixelRatio(software ? SOFTWARE_PIXEL_RATIO : Math.min(window.devicePixelRatio || 1, MAX_PIXEL_RATIO));
