@@ -11,6 +11,7 @@ import json
 import logging
 import mimetypes
 import os
+import time
 
 from aiohttp import WSMsgType, web
 
@@ -24,13 +25,29 @@ VIEW_FILE_TYPES = (".js", ".css", ".svg", ".png", ".html")
 mimetypes.add_type("text/javascript", ".js")  # module scripts need it; some systems map .js otherwise
 
 
+class WallClock:
+    """ROS time where there is no sim time: the wall clock (ros_clock.RosClock's interface)."""
+    use_sim_time = False
+
+    async def acquire(self):
+        pass
+
+    def release(self):
+        pass
+
+    def now(self):
+        return time.time()
+
+
 class Studio:
     """The server and the views' shared services. `roots` maps URL prefixes to folders:
-    {"": www, "vendor/three": /usr/share/javascript/three, ...}."""
+    {"": www, "vendor/three": /usr/share/javascript/three, ...}; `clock` gives the views ROS
+    time (the node passes a ros_clock.RosClock)."""
 
-    def __init__(self, host, port, token, roots):
+    def __init__(self, host, port, token, roots, clock=None):
         self.host, self.port, self.token = host, port, token
         self.roots = roots
+        self.clock = clock or WallClock()
         self.views = {}
         self.clients = set()
         self.loop = None

@@ -135,14 +135,18 @@ class PlotView(View):
             series = self._series[path] = _Series(path, topic, field)
             self._by_topic[topic] = self._by_topic.get(topic, ()) + (series,)
             if topic not in self._subscribers:
-                self._subscribers[topic] = rospy.Subscriber(topic, cls, self._received, callback_args=(topic, cls),
-                                                            queue_size=1000)
+                await self.studio.clock.acquire()  # the times of messages without a header
+                if topic in self._subscribers:  # another series of the topic subscribed meanwhile
+                    self.studio.clock.release()
+                else:
+                    self._subscribers[topic] = rospy.Subscriber(topic, cls, self._received,
+                                                                callback_args=(topic, cls), queue_size=1000)
         return series
 
     def _received(self, msg, topic_class):  # rospy's thread
         topic, cls = topic_class
         msg = subscription.typed(msg, cls)  # an AnyMsg when another part of the process subscribed so first
-        t = message_time(msg, rospy.get_time())
+        t = message_time(msg, self.studio.clock.now())
         for series in self._by_topic.get(topic, ()):
             try:
                 value = extract(msg, series.steps)
@@ -166,6 +170,7 @@ class PlotView(View):
             else:
                 self._by_topic.pop(series.topic, None)
                 self._subscribers.pop(series.topic).unregister()
+                self.studio.clock.release()
 
     # --- sending ----------------------------------------------------------------------------
     async def _run(self):

@@ -97,9 +97,14 @@ class PublisherView(View):
         if existing and existing != cls._type:
             raise ValueError("topic %s already carries %s; a %s publisher would reach none of its subscribers"
                              % (topic, existing, cls._type))
+        await self.studio.clock.acquire()  # for `t`, held while the publisher lives
+        if client.closed:  # the page went meanwhile
+            self.studio.clock.release()
+            raise ValueError("the page closed")
         try:
             pub = _Publisher(next(self._ids), client, topic, cls)
         except rospy.ROSException as e:  # this process already has the topic with another type
+            self.studio.clock.release()
             raise ValueError("topic %s: %s" % (topic, e))
         self._publishers[pub.pid] = pub
         return dict(self._status(pub), fields=message_fields.describe(cls))
@@ -143,9 +148,8 @@ class PublisherView(View):
         pub.ros.publish(msg)
 
     # --- helpers ----------------------------------------------------------------------------
-    @staticmethod
-    def _variables(i):
-        return {"i": i, "t": rospy.get_time()}
+    def _variables(self, i):
+        return {"i": i, "t": self.studio.clock.now()}
 
     def _own(self, client, message):
         pub = self._publishers.get(message.get("publisher"))
@@ -170,6 +174,7 @@ class PublisherView(View):
             pub.enabled = False
             self._stop_timer(pub)
             pub.ros.unregister()
+            self.studio.clock.release()
 
 
 def _topic_types():

@@ -29,15 +29,16 @@ LIST_PERIOD = 2.0     # s between the master's topic lists
 class _Watch:
     """A topic subscribed because a page monitors or echoes it."""
 
-    def __init__(self, topic, type_name):
+    def __init__(self, topic, type_name, clock):
         self.topic = topic
+        self.clock = clock
         self.stats = TopicStatistics()
         self.latest = None  # the newest message, as it arrived (decoded, or AnyMsg)
         self.seq = 0
         self.subscriber = subscription.subscribe(topic, type_name, self._received, queue_size=100)
 
     def _received(self, msg):  # rospy's thread: count and keep
-        self.stats.add(rospy.get_time(), time.time(), subscription.serialized_size(msg))
+        self.stats.add(self.clock.now(), time.time(), subscription.serialized_size(msg))
         self.latest = msg
         self.seq += 1
 
@@ -165,6 +166,7 @@ class TopicsView(View):
     def _unsubscribe_unwanted(self):
         for topic in set(self._watches) - self._wanted():
             self._watches.pop(topic).subscriber.unregister()
+            self.studio.clock.release()
 
     async def _update_subscriptions(self):
         self._unsubscribe_unwanted()
@@ -174,7 +176,11 @@ class TopicsView(View):
             await self._refresh_list()
             types = {t["name"]: t["type"] for t in self._topics}
         for topic in new - set(self._watches):
-            self._watches[topic] = _Watch(topic, types.get(topic, ""))
+            await self.studio.clock.acquire()  # rates count in ROS time, as rostopic hz
+            if topic in self._watches:  # another page's request watched it meanwhile
+                self.studio.clock.release()
+                continue
+            self._watches[topic] = _Watch(topic, types.get(topic, ""), self.studio.clock)
 
 
 def _topic_name(topic):

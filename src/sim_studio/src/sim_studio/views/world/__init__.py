@@ -52,11 +52,9 @@ class WorldView(View):
         self._meshes = {}       # mesh id -> path: the only files routes() serves
         self._subscribers = []
         self._status_task = None
-        self._use_sim_time = False
 
     # --- lifetime ----------------------------------------------------------------------------
     def start(self):
-        self._use_sim_time = bool(rospy.get_param("/use_sim_time", False))
         self._status_task = asyncio.ensure_future(self._status_loop())
 
     def stop(self):
@@ -130,7 +128,7 @@ class WorldView(View):
         status = {"view": self.name, "type": "status"}
         try:
             props = await self.control.physics()
-            sim = await self._sim_time()
+            sim = await self.control.sim_time()  # the simulator's word: no /clock to follow (ros_clock.py)
             if props.pause:  # the factor starts again on resume, not averaged over the pause
                 self.rtf = RealTimeFactor()
             status.update(sim_time=sim, paused=props.pause, target=target_factor(props), time_step=props.time_step,
@@ -138,12 +136,6 @@ class WorldView(View):
         except ValueError as e:
             status["error"] = str(e)
         return status
-
-    async def _sim_time(self):
-        # /clock, which rospy follows under /use_sim_time, else the simulator's own word
-        if self._use_sim_time:
-            return rospy.get_rostime().to_sec()
-        return await self.control.sim_time()
 
     # --- requests ----------------------------------------------------------------------------
     async def handle(self, client, message):
