@@ -346,6 +346,20 @@ def measure(name, seconds, moves, rounds, rtf_seconds):
 
 
 # --- the parent: one child per world, then the table ------------------------------------------
+def report_slowdown(r, suffix, label):
+    """The alternating windows' figures, at rest (suffix "") or moving ("_moving")."""
+    none, page, cpu_none, cpu_page = (r["rtf_none" + suffix], r["rtf_page" + suffix], r["cpu_none" + suffix],
+                                      r["cpu_page" + suffix])
+    print("  %s: unthrottled RTF, no page %s" % (label, ", ".join("%.1f" % v for v in none)))
+    print("  %s: unthrottled RTF, page    %s  (page frames/s %s)" % (
+        label, ", ".join("%.1f" % v for v in page), ", ".join("%.1f" % v for v in r["page_frames" + suffix])))
+    print("  %s: slow-down with one page: median %.1f %% (quartiles %.1f, %.1f %%; target <= 5 %%)"
+          % (label, 100 * r["slowdown" + suffix], 100 * r["slowdown_q1" + suffix], 100 * r["slowdown_q3" + suffix]))
+    print("  %s: cores used, no page / page: simulator %.2f / %.2f, studio %.3f / %.3f, browser %.3f / %.3f"
+          % (label, cpu_none["simulator"], cpu_page["simulator"], cpu_none["studio"], cpu_page["studio"],
+             cpu_none["browser"], cpu_page["browser"]))
+
+
 def report(results, argv):
     print("\nStudio World view, headless Chromium (SwiftShader), %d cores, %s" % (os.cpu_count(), time.strftime("%Y-%m-%d")))
     for r in results:
@@ -357,22 +371,8 @@ def report(results, argv):
               % (r["latency_median"], r["latency_p95"], r["latency_max"], r["moves"]))
         print("    of which: the call returns          median %.1f, p95 %.1f" % (r["call_median"], r["call_p95"]))
         print("              the poses reach the page  median %.1f, p95 %.1f" % (r["arrival_median"], r["arrival_p95"]))
-        print("  unthrottled RTF, no page:             %s" % ", ".join("%.1f" % v for v in r["rtf_none"]))
-        print("  unthrottled RTF, one page:            %s  (page frames/s %s)" % (
-            ", ".join("%.1f" % v for v in r["rtf_page"]), ", ".join("%.1f" % v for v in r["page_frames"])))
-        print("  slow-down with one page:              median %.1f %% (quartiles %.1f, %.1f %%; target <= 5 %%)"
-              % (100 * r["slowdown"], 100 * r["slowdown_q1"], 100 * r["slowdown_q3"]))
-        print("  cores used (medians), no page / page: simulator %.2f / %.2f, studio %.3f / %.3f, browser %.3f / %.3f"
-              % (r["cpu_none"]["simulator"], r["cpu_page"]["simulator"], r["cpu_none"]["studio"],
-                 r["cpu_page"]["studio"], r["cpu_none"]["browser"], r["cpu_page"]["browser"]))
-        print("  world moving: unthrottled RTF, no page %s" % ", ".join("%.1f" % v for v in r["rtf_none_moving"]))
-        print("  world moving: unthrottled RTF, page    %s  (page frames/s %s)" % (
-            ", ".join("%.1f" % v for v in r["rtf_page_moving"]), ", ".join("%.1f" % v for v in r["page_frames_moving"])))
-        print("  world moving: slow-down with one page: median %.1f %% (quartiles %.1f, %.1f %%; target <= 5 %%)"
-              % (100 * r["slowdown_moving"], 100 * r["slowdown_q1_moving"], 100 * r["slowdown_q3_moving"]))
-        print("  world moving: cores used, no page / page: simulator %.2f / %.2f, studio %.3f / %.3f, browser %.3f / %.3f"
-              % (r["cpu_none_moving"]["simulator"], r["cpu_page_moving"]["simulator"], r["cpu_none_moving"]["studio"],
-                 r["cpu_page_moving"]["studio"], r["cpu_none_moving"]["browser"], r["cpu_page_moving"]["browser"]))
+        report_slowdown(r, "", "world at rest")
+        report_slowdown(r, "_moving", "world moving")
         print("  unthrottled RTF, page drawing always: %.1f  -> slow-down %.1f %%"
               % (r["rtf_page_every_frame"], 100 * r["slowdown_every_frame"]))
     print("\nreproduce: %s %s" % (COMMAND, " ".join(argv)))

@@ -1,0 +1,1 @@
+"""Scenario batches: many isolated runs, on Ray (issue 36). docs/BATCH.md."""
