@@ -1,0 +1,80 @@
+"""isolated_run.py with real roscores (no Ray): a run's own master and folders, its result line,
+the time limit killing the whole process group, a failure's logs, two runs at once apart."""
+import io
+import os
+import subprocess
+import tarfile
+import threading
+
+from sim_batch.isolated_run import last_json_line, run_isolated
+from sim_batch.scenario import Run
+
+def alive(pattern):
+    """A process whose command line holds `pattern` (pgrep leaves itself out; no shell around it)."""
+    return subprocess.run(["pgrep", "-f", pattern], stdout=subprocess.DEVNULL).returncode == 0
+
+
+def test_a_command_runs_on_its_own_master_and_its_json_line_is_the_result(tmp_path):
+    command = ('rosparam set /answer 42 && echo "noise" && '
+               'echo "{\\"answer\\": $(rosparam get /answer), \\"home\\": \\"$ROS_HOME\\", \\"seed\\": $SIM_BATCH_SEED}"')
+    record, archive = run_isolated(Run(scenario="a", command=command, seed=7, time_limit=60), str(tmp_path))
+    assert record["state"] == "ok", record
+    assert record["result"]["answer"] == 42 and record["result"]["seed"] == 7
+    assert record["result"]["home"].startswith(str(tmp_path))  # its own ROS_HOME, gone afterwards
+    assert not os.path.exists(record["result"]["home"])
+    assert record["master"].startswith("http://127.0.0.1:") and record["master"] != os.environ.get("ROS_MASTER_URI")
+    assert 0.5 < record["wall_s"] < 30 and record["sim_s"] is None
+    assert archive is None
+
+
+def test_the_time_limit_kills_the_whole_group_and_the_logs_come_back(tmp_path):
+    marker = "sim_batch_test_marker_limit"
+    # a child in the background and a grandchild: all in the run's group, all killed
+    command = "(sleep 300; echo %s) & bash -c 'sleep 301 # %s' & echo started; sleep 302 # %s" % (marker, marker, marker)
+    record, archive = run_isolated(Run(scenario="slow", command=command, time_limit=2), str(tmp_path))
+    assert record["state"] == "timeout" and "2 s" in record["error"]
+    assert 2.0 <= record["wall_s"] < 15.0
+    assert not alive(marker), "a process of the run survived its time limit"
+    assert not alive("roscore -p %s" % record["master"].rsplit(":", 1)[1])
+    with tarfile.open(fileobj=io.BytesIO(archive)) as tar:
+        names = tar.getnames()
+        assert "logs/command.log" in names and "logs/roscore.log" in names
+        assert b"started" in tar.extractfile("logs/command.log").read()
+
+
+def test_a_failing_check_is_recorded_with_its_status_and_a_launch_runs_beside_it(tmp_path):
+    launch = tmp_path / "talker.launch"
+    launch.write_text('<launch><node name="talker" pkg="rostopic" type="rostopic" '
+                      'args="pub -r 10 /chatter std_msgs/String hello"/></launch>')
+    check = "rostopic echo -n 1 /chatter/data && exit 3"
+    record, archive = run_isolated(Run(scenario="c", launch=str(launch), check=check, time_limit=60), str(tmp_path))
+    assert record["state"] == "failed" and record["exit_code"] == 3
+    assert "check exited with status 3" in record["error"]
+    with tarfile.open(fileobj=io.BytesIO(archive)) as tar:
+        assert b"hello" in tar.extractfile("logs/check.log").read()  # the launch's talker was heard
+
+
+def test_two_runs_at_once_do_not_see_each_others_topics(tmp_path):
+    # each publishes its own name latched and reads back what its master has: only its own
+    command = ("rostopic pub -l /who std_msgs/String %s & sleep 1.5; "
+               "heard=$(rostopic echo -n 1 /who/data | head -1 | tr -d '\"'); "
+               "echo \"{\\\"heard\\\": \\\"$heard\\\", \\\"topics\\\": $(rostopic list | grep -c who)}\"")
+    records = {}
+
+    def one(name):
+        records[name] = run_isolated(Run(scenario=name, command=command % name, time_limit=60), str(tmp_path))[0]
+    threads = [threading.Thread(target=one, args=(n,)) for n in ("left", "right")]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for name in ("left", "right"):
+        assert records[name]["state"] == "ok", records[name]
+        assert records[name]["result"]["heard"] == name
+        assert records[name]["result"]["topics"] == 1
+    assert records["left"]["master"] != records["right"]["master"]
+
+
+def test_the_last_json_object_line_is_the_result():
+    assert last_json_line('{"a": 1}\nlog\n{"b": 2}\n[3]\n{bad\n') == {"b": 2}
+    assert last_json_line("nothing here") is None
