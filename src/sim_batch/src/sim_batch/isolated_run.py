@@ -1,7 +1,8 @@
 """One run, isolated, on the machine this is called on (a Ray worker): its own ROS master on a
-free port, its own ROS_HOME, ROS_LOG_DIR and TMPDIR, and every process it starts in one process
-group, killed whole when the run ends or reaches its time limit. No rospy here: one worker runs
-many runs one after another, each on its own master, and rospy binds a process to one master.
+free port, its own ROS_HOME, ROS_LOG_DIR and TMPDIR, its processes started as jobs and stopped
+as a user stops them, all of them, when the run ends or reaches its time limit
+(run_processes.py). No rospy here: one worker runs many runs one after another, each on its own
+master, and rospy binds a process to one master.
 
 A run is either `launch` + `check` (the launch started, then the check run beside it; the
 check's last JSON line is the result and its end ends the run) or `command` (the whole run; its
@@ -12,17 +13,18 @@ import json
 import os
 import shlex
 import shutil
-import signal
 import socket
 import subprocess
+import sys
 import tarfile
 import tempfile
 import time
 import xmlrpc.client
 
+from sim_batch.run_processes import RunProcesses
+
 PORT_ATTEMPTS = 5          # a port found free can be taken before roscore binds it
 MASTER_WAIT_S = 20.0       # roscore's start, on a loaded machine
-STOP_GRACE_S = 20.0        # for roslaunch to stop its nodes after SIGINT (it escalates itself after 15 s)
 CLOCK_WAIT_S = 3.0
 
 
@@ -34,24 +36,24 @@ def run_isolated(run, scratch_dir=None):
     record = {"run_id": run.run_id, "scenario": run.scenario, "params": run.params, "seed": run.seed,
               "host": socket.gethostname(), "cpu_model": cpu_model(), "sim_s": None, "result": None,
               "error": None}
-    group = ProcessGroup(folder)
+    jobs = RunProcesses(folder)
     try:
         env = isolated_env(run, folder)
-        port = group.start_master(env)
+        port = start_master(jobs, env)
         env["ROS_MASTER_URI"] = record["master"] = "http://127.0.0.1:%d" % port
         deadline = started + run.time_limit
         if run.command is not None:
-            main = group.start("command", ["bash", "-c", run.command], env)
+            main = jobs.start("command", ["bash", "-c", run.command], env)
         else:
-            group.start("launch", ["roslaunch", "--wait"] + shlex.split(run.launch) + list(run.launch_args), env)
-            main = group.start("check", ["bash", "-c", run.check], env)
+            jobs.start("launch", ["roslaunch", "--wait"] + shlex.split(run.launch) + list(run.launch_args), env)
+            main = jobs.start("check", ["bash", "-c", run.check], env)
         try:
             main.wait(timeout=max(0.0, deadline - time.monotonic()))
         except subprocess.TimeoutExpired:
             record.update(state="timeout", error="killed at its time limit, %.0f s" % run.time_limit)
         else:
             record["exit_code"] = main.returncode
-            record["result"] = last_json_line(group.output(main))
+            record["result"] = last_json_line(jobs.output(main.name))
             if main.returncode != 0:
                 record.update(state="failed", error="%s exited with status %d" % (main.name, main.returncode))
             elif record["result"] is None:
@@ -67,7 +69,7 @@ def run_isolated(run, scratch_dir=None):
     except MasterError as e:
         record.update(state="failed", error=str(e))
     finally:
-        group.stop()
+        jobs.stop()
         record["wall_s"] = round(time.monotonic() - started, 3)
         archive = logs_archive(folder) if record.get("state") != "ok" else None
         shutil.rmtree(folder, ignore_errors=True)
@@ -78,97 +80,21 @@ class MasterError(RuntimeError):
     pass
 
 
-class ProcessGroup:
-    """The run's processes, in one process group (the master's), their output in files."""
-
-    def __init__(self, folder):
-        self.folder = folder
-        self.pgid = None
-        self.processes = []
-
-    def start_master(self, env):
-        """roscore on a free port: the port (tried again on another if it was taken meanwhile)."""
-        for attempt in range(1, PORT_ATTEMPTS + 1):
-            port = free_port()
-            master = self.start("roscore", ["roscore", "-p", str(port)], env)
-            deadline = time.monotonic() + MASTER_WAIT_S
-            while time.monotonic() < deadline:
-                if master_answers(port):
-                    return port
-                if master.poll() is not None:
-                    break  # the port was taken, or roscore could not start: another port
-                time.sleep(0.05)
-            self.stop()
-        raise MasterError("no ROS master would start (%d ports tried); roscore said: %s"
-                          % (PORT_ATTEMPTS, self.tail("roscore")))
-
-    def start(self, name, argv, env):
-        out = open(os.path.join(self.folder, "logs", name + ".log"), "ab")
-        # the first process starts a group of its own (not the terminal's foreground group, so a
-        # Ctrl-C there does not reach it); the rest join it: one killpg stops them all, nodes included
-        process = subprocess.Popen(argv, env=env, cwd=env["TMPDIR"], stdin=subprocess.DEVNULL, stdout=out,
-                                   stderr=subprocess.STDOUT, process_group=self.pgid or 0)
-        out.close()
-        process.name = name
-        if self.pgid is None:
-            self.pgid = process.pid
-        self.processes.append(process)
-        return process
-
-    def output(self, process):
-        with open(os.path.join(self.folder, "logs", process.name + ".log"), "rb") as f:
-            return f.read().decode("utf-8", "replace")
-
-    def tail(self, name, lines=5):
-        try:
-            with open(os.path.join(self.folder, "logs", name + ".log"), "rb") as f:
-                return " | ".join(f.read().decode("utf-8", "replace").strip().splitlines()[-lines:]) or "nothing"
-        except OSError:
-            return "nothing"
-
-    def stop(self):
-        """SIGINT to the whole group (roslaunch stops its nodes cleanly) and time for the processes
-        started here to end; then SIGTERM and SIGKILL for what is left (e.g. background jobs of a
-        shell, which ignore SIGINT)."""
-        if self.pgid is None:
-            return
-        steps = ((signal.SIGINT, STOP_GRACE_S, lambda: all(p.poll() is not None for p in self.processes)),
-                 (signal.SIGTERM, 2.0, lambda: not group_alive(self.pgid)),
-                 (signal.SIGKILL, 5.0, lambda: not group_alive(self.pgid)))
-        for sig, wait, done in steps:
-            try:
-                os.killpg(self.pgid, sig)
-            except ProcessLookupError:
-                break
-            deadline = time.monotonic() + wait
-            while not done() and time.monotonic() < deadline:
-                time.sleep(0.05)
-        for p in self.processes:
-            try:
-                p.wait(timeout=1.0)
-            except subprocess.TimeoutExpired:
-                pass
-        self.pgid, self.processes = None, []
-
-
-def group_alive(pgid):
-    try:
-        os.killpg(pgid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:
-        return True
-    # a zombie of ours still counts for killpg: only a live member does
-    for entry in os.listdir("/proc"):
-        if entry.isdigit():
-            try:
-                with open("/proc/%s/stat" % entry) as f:
-                    fields = f.read().rsplit(")", 1)[1].split()
-            except OSError:
-                continue
-            if int(fields[2]) == pgid and fields[0] != "Z":
-                return True
-    return False
+def start_master(jobs, env):
+    """roscore on a free port: the port (tried again on another if it was taken meanwhile)."""
+    for attempt in range(1, PORT_ATTEMPTS + 1):
+        port = free_port()
+        master = jobs.start("roscore", ["roscore", "-p", str(port)], env)
+        deadline = time.monotonic() + MASTER_WAIT_S
+        while time.monotonic() < deadline:
+            if master_answers(port):
+                return port
+            if master.poll() is not None:
+                break  # the port was taken, or roscore could not start: another port
+            time.sleep(0.05)
+        jobs.stop()
+    raise MasterError("no ROS master would start (%d ports tried); roscore said: %s"
+                      % (PORT_ATTEMPTS, jobs.tail("roscore")))
 
 
 def isolated_env(run, folder):
@@ -193,9 +119,11 @@ def free_port():
 
 
 def master_answers(port):
+    """roscore is up: its master answers and its /rosout runs. Only then has roslaunch finished
+    starting; a SIGINT before that was now and then lost, and roscore ran on until killed."""
     try:
         proxy = xmlrpc.client.ServerProxy("http://127.0.0.1:%d" % port)
-        return proxy.getPid("/sim_batch")[0] == 1
+        return proxy.lookupNode("/sim_batch", "/rosout")[0] == 1
     except (OSError, xmlrpc.client.Error):
         return False
 

@@ -4,7 +4,9 @@ import io
 import os
 import subprocess
 import tarfile
+import sys
 import threading
+import time
 
 from sim_batch.isolated_run import last_json_line, run_isolated
 from sim_batch.scenario import Run
@@ -28,13 +30,13 @@ def test_a_command_runs_on_its_own_master_and_its_json_line_is_the_result(tmp_pa
 
 
 def test_the_time_limit_kills_the_whole_group_and_the_logs_come_back(tmp_path):
-    marker = "sim_batch_test_marker_limit"
-    # a child in the background and a grandchild: all in the run's group, all killed
-    command = "(sleep 300; echo %s) & bash -c 'sleep 301 # %s' & echo started; sleep 302 # %s" % (marker, marker, marker)
+    # background jobs (which ignore SIGINT), a grandchild and the foreground: all stopped;
+    # their durations mark them for pgrep
+    command = "(sleep 300.11; true) & bash -c 'sleep 300.12; true' & echo started; sleep 300.13"
     record, archive = run_isolated(Run(scenario="slow", command=command, time_limit=2), str(tmp_path))
     assert record["state"] == "timeout" and "2 s" in record["error"]
     assert 2.0 <= record["wall_s"] < 15.0
-    assert not alive(marker), "a process of the run survived its time limit"
+    assert not alive("sleep 300.1"), "a process of the run survived its time limit"
     assert not alive("roscore -p %s" % record["master"].rsplit(":", 1)[1])
     with tarfile.open(fileobj=io.BytesIO(archive)) as tar:
         names = tar.getnames()
@@ -78,3 +80,21 @@ def test_two_runs_at_once_do_not_see_each_others_topics(tmp_path):
 def test_the_last_json_object_line_is_the_result():
     assert last_json_line('{"a": 1}\nlog\n{"b": 2}\n[3]\n{bad\n') == {"b": 2}
     assert last_json_line("nothing here") is None
+
+
+def test_a_run_whose_owner_dies_is_stopped_by_its_reaper(tmp_path):
+    # the command comes through the environment: the owner's own command line must not match
+    owner = subprocess.Popen([sys.executable, "-c", (
+        "import os; from sim_batch.isolated_run import run_isolated; from sim_batch.scenario import Run; "
+        "run_isolated(Run(scenario='o', command=os.environ['RUN_COMMAND'], time_limit=600), %r)" % str(tmp_path))],
+        env=dict(os.environ, RUN_COMMAND="sleep 300.21; true"))
+    deadline = time.monotonic() + 30
+    while not alive("sleep 300.21") and time.monotonic() < deadline:
+        time.sleep(0.1)
+    assert alive("sleep 300.21"), "the run did not start"
+    owner.kill()  # as a Ray worker killed mid-run: no finally, no stop()
+    owner.wait()
+    deadline = time.monotonic() + 15
+    while alive("sleep 300.21") and time.monotonic() < deadline:
+        time.sleep(0.1)
+    assert not alive("sleep 300.21"), "the orphaned run's processes live on"

@@ -1,0 +1,100 @@
+"""A batch's runs as Ray tasks: `ray.init()` makes a cluster of this machine with no set-up;
+an address (or RAY_ADDRESS) sends the same tasks to a real cluster. Ray schedules (each task
+reserves the run's num_cpus), retries a task whose worker died (max_retries) and brings the
+results back; this module only records them as they come.
+"""
+import os
+import sys
+import time
+
+import ray
+
+from sim_batch.isolated_run import run_isolated
+
+# Ray's own log lines on the terminal would bury the progress line; they stay in its log folder.
+RAY_INIT = {"include_dashboard": False, "log_to_driver": False, "configure_logging": False}
+
+
+@ray.remote
+class Attempts:
+    """How many times each run started: Ray retries a task whose worker died, and the record
+    says so."""
+
+    def __init__(self):
+        self.counts = {}
+
+    def started(self, run_id):
+        self.counts[run_id] = self.counts.get(run_id, 0) + 1
+
+    def count(self, run_id):
+        return self.counts.get(run_id, 0)
+
+
+def _run_task(run, attempts):
+    ray.get(attempts.started.remote(run.run_id))
+    return run_isolated(run)
+
+
+class Progress:
+    """One line, rewritten: done / failed / running, and the time left estimated from the runs
+    finished so far."""
+
+    def __init__(self, total, stream=sys.stderr):
+        self.total, self.stream, self.started = total, stream, time.monotonic()
+        self.done = self.failed = 0
+
+    def show(self, running):
+        finished = self.done + self.failed
+        elapsed = time.monotonic() - self.started
+        left = "%.0f s left" % (elapsed / finished * (self.total - finished)) if finished else "time left: -"
+        line = "%d/%d runs: %d done, %d failed, %d running, %s" % (finished, self.total, self.done, self.failed,
+                                                                   running, left)
+        end = "\n" if finished == self.total else ""
+        print("\r" + line.ljust(78), end=end, file=self.stream, flush=True)
+
+
+def run_batch(runs, results, logs_dir, address=None, retries=1, stream=sys.stderr):
+    """Runs what `results` (results.ResultsFile) does not have yet, appending each record as its
+    run ends; a failed run's logs go to logs_dir/<run_id>.tar.gz. Returns the records added."""
+    todo = [run for run in runs if run.run_id not in results.done()]
+    if not todo:
+        return []
+    ray.init(address=address or os.environ.get("RAY_ADDRESS") or None, **RAY_INIT)
+    try:
+        attempts = Attempts.remote()
+        task = ray.remote(max_retries=retries)(_run_task)
+        pending = {task.options(num_cpus=run.num_cpus, name=run.run_id).remote(run, attempts): run for run in todo}
+        progress = Progress(len(todo), stream)
+        progress.show(len(pending))
+        added = []
+        while pending:
+            ready, _ = ray.wait(list(pending), num_returns=1, timeout=1.0)
+            for ref in ready:
+                run = pending.pop(ref)
+                record = _record(ref, run, logs_dir)
+                record["attempts"] = ray.get(attempts.count.remote(run.run_id))
+                results.append(record)
+                added.append(record)
+                if record["state"] == "ok":
+                    progress.done += 1
+                else:
+                    progress.failed += 1
+            progress.show(len(pending))
+        return added
+    finally:
+        ray.shutdown()
+
+
+def _record(ref, run, logs_dir):
+    try:
+        record, archive = ray.get(ref)
+    except ray.exceptions.RayError as e:  # the worker died more often than retries allow, or the task raised
+        record, archive = {"run_id": run.run_id, "scenario": run.scenario, "params": run.params, "seed": run.seed,
+                           "state": "lost", "error": "%s: %s" % (type(e).__name__, str(e).splitlines()[0])}, None
+    if archive:
+        os.makedirs(logs_dir, exist_ok=True)
+        path = os.path.join(logs_dir, run.run_id.replace("/", "_") + ".tar.gz")
+        with open(path, "wb") as f:
+            f.write(archive)
+        record["logs"] = path
+    return record
