@@ -26,6 +26,7 @@ from sim_batch.run_processes import RunProcesses
 PORT_ATTEMPTS = 5          # a port found free can be taken before roscore binds it
 MASTER_WAIT_S = 20.0       # roscore's start, on a loaded machine
 CLOCK_WAIT_S = 3.0
+LAUNCH_WAIT_S = 60.0       # for the launch's first node (its parameters are set before it)
 
 
 def run_isolated(run, scratch_dir=None):
@@ -45,7 +46,8 @@ def run_isolated(run, scratch_dir=None):
         if run.command is not None:
             main = jobs.start("command", ["bash", "-c", run.command], env)
         else:
-            jobs.start("launch", ["roslaunch", "--wait"] + shlex.split(run.launch) + list(run.launch_args), env)
+            launch = jobs.start("launch", ["roslaunch", "--wait"] + shlex.split(run.launch) + list(run.launch_args), env)
+            wait_for_launch(port, launch, deadline)
             main = jobs.start("check", ["bash", "-c", run.check], env)
         try:
             main.wait(timeout=max(0.0, deadline - time.monotonic()))
@@ -126,6 +128,23 @@ def master_answers(port):
         return proxy.lookupNode("/sim_batch", "/rosout")[0] == 1
     except (OSError, xmlrpc.client.Error):
         return False
+
+
+def wait_for_launch(port, launch, deadline):
+    """Until a node of the launch has registered with the master: roslaunch sets every parameter
+    (/use_sim_time among them) before it starts a node, and a check started sooner would read a
+    master without them (rospy would run on the wall clock). Gives up at LAUNCH_WAIT_S, at the
+    deadline, or when roslaunch has ended."""
+    until = min(deadline, time.monotonic() + LAUNCH_WAIT_S)
+    proxy = xmlrpc.client.ServerProxy("http://127.0.0.1:%d" % port)
+    while time.monotonic() < until and launch.poll() is None:
+        try:
+            code, _, state = proxy.getSystemState("/sim_batch")
+        except (OSError, xmlrpc.client.Error):
+            state, code = None, 0
+        if code == 1 and any(node != "/rosout" for kind in state for _, nodes in kind for node in nodes):
+            return
+        time.sleep(0.05)
 
 
 def sim_time(env, port):

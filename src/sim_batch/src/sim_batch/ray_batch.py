@@ -36,21 +36,29 @@ def _run_task(run, attempts):
 
 
 class Progress:
-    """One line, rewritten: done / failed / running, and the time left estimated from the runs
-    finished so far."""
+    """done / failed / running and the time left estimated from the runs finished so far: one
+    line rewritten on a terminal, a line per change in a log."""
 
     def __init__(self, total, stream=sys.stderr):
         self.total, self.stream, self.started = total, stream, time.monotonic()
         self.done = self.failed = 0
+        self._last = None
+        self._terminal = stream.isatty()
 
     def show(self, running):
         finished = self.done + self.failed
+        counts = "%d/%d runs: %d done, %d failed, %d running" % (finished, self.total, self.done, self.failed, running)
+        if counts == self._last and not self._terminal:
+            return
+        self._last = counts
         elapsed = time.monotonic() - self.started
-        left = "%.0f s left" % (elapsed / finished * (self.total - finished)) if finished else "time left: -"
-        line = "%d/%d runs: %d done, %d failed, %d running, %s" % (finished, self.total, self.done, self.failed,
-                                                                   running, left)
-        end = "\n" if finished == self.total else ""
-        print("\r" + line.ljust(78), end=end, file=self.stream, flush=True)
+        left = ", %.0f s left" % (elapsed / finished * (self.total - finished)) if finished else ""
+        line = counts + left
+        if self._terminal:
+            end = "\n" if finished == self.total else ""
+            print("\r" + line.ljust(78), end=end, file=self.stream, flush=True)
+        else:
+            print(line, file=self.stream, flush=True)
 
 
 def run_batch(runs, results, logs_dir, address=None, retries=1, stream=sys.stderr):
