@@ -32,7 +32,9 @@ class Attempts:
 
 def _run_task(run, attempts):
     ray.get(attempts.started.remote(run.run_id))
-    return run_isolated(run)
+    record, archive = run_isolated(run)
+    record["node"] = ray.get_runtime_context().get_node_id()  # which Ray node ran it
+    return record, archive
 
 
 class Progress:
