@@ -10,18 +10,9 @@ file is gone), or once it has stopped them itself.
 import sys
 import time
 
-from sim_batch.run_processes import group_alive, stop_groups
+from sim_batch.run_processes import group_alive, process_alive, stop_groups
 
 POLL_S = 0.5
-
-
-def owner_alive(pid):
-    """Alive and not a zombie (a killed worker its parent has not reaped yet is dead here)."""
-    try:
-        with open("/proc/%d/stat" % pid) as f:
-            return f.read().rsplit(")", 1)[1].split()[0] != "Z"
-    except OSError:
-        return False
 
 
 def groups(path):
@@ -33,7 +24,7 @@ def groups(path):
 
 
 def main(owner, path):
-    while owner_alive(owner):
+    while process_alive(owner):
         listed = groups(path)
         if listed is None or (listed and not any(group_alive(g) for g in listed)):
             return  # stopped by its owner

@@ -98,8 +98,13 @@ def signal_group(pgid, sig):
 def leader_alive(pgid, process):
     if process is not None:
         return process.poll() is None  # our child: poll() also reaps it
+    return process_alive(pgid)
+
+
+def process_alive(pid):
+    """Running and not a zombie (a killed process its parent has not reaped yet is dead here)."""
     try:
-        with open("/proc/%d/stat" % pgid) as f:
+        with open("/proc/%d/stat" % pid) as f:
             return f.read().rsplit(")", 1)[1].split()[0] != "Z"
     except OSError:
         return False
