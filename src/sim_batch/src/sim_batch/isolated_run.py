@@ -19,6 +19,7 @@ import sys
 import tarfile
 import tempfile
 import time
+import uuid
 import xmlrpc.client
 
 from sim_batch.run_processes import RunProcesses
@@ -37,9 +38,10 @@ def run_isolated(run, scratch_dir=None):
     record = {"run_id": run.run_id, "scenario": run.scenario, "params": run.params, "seed": run.seed,
               "host": socket.gethostname(), "cpu_model": cpu_model(), "sim_s": None, "result": None,
               "error": None}
-    jobs = RunProcesses(folder)
+    token = uuid.uuid4().hex
+    jobs = RunProcesses(folder, token)
     try:
-        env = isolated_env(run, folder)
+        env = isolated_env(run, folder, token)
         port = start_master(jobs, env)
         env["ROS_MASTER_URI"] = record["master"] = "http://127.0.0.1:%d" % port
         deadline = started + run.time_limit
@@ -99,18 +101,18 @@ def start_master(jobs, env):
                       % (PORT_ATTEMPTS, jobs.tail("roscore")))
 
 
-def isolated_env(run, folder):
+def isolated_env(run, folder, token):
     env = dict(os.environ)
     for sub in ("ros_home", "ros_log", "tmp", "logs"):
         os.makedirs(os.path.join(folder, sub), exist_ok=True)
     env.update(ROS_HOME=os.path.join(folder, "ros_home"), ROS_LOG_DIR=os.path.join(folder, "ros_log"),
-               TMPDIR=os.path.join(folder, "tmp"), SIM_BATCH_RUN_ID=run.run_id,
+               TMPDIR=os.path.join(folder, "tmp"), SIM_BATCH_RUN_ID=run.run_id, SIM_BATCH_RUN_TOKEN=token,
                SIM_BATCH_PARAMS=json.dumps(run.params, sort_keys=True))
     env.pop("ROS_IP", None)
     env["ROS_HOSTNAME"] = "127.0.0.1"  # the run's nodes talk on loopback only: no run sees another's
     if run.seed is not None:
         env["SIM_BATCH_SEED"] = str(run.seed)
-    env.update(run.env)
+    env.update({k: v for k, v in run.env.items() if k != "SIM_BATCH_RUN_TOKEN"})
     return env
 
 

@@ -13,6 +13,7 @@ from sim_batch.isolated_run import run_isolated
 
 # Ray's own log lines on the terminal would bury the progress line; they stay in its log folder.
 RAY_INIT = {"include_dashboard": False, "log_to_driver": False, "configure_logging": False}
+CANCEL_WAIT_S = 40.0  # a run's stop: its jobs' SIGINT grace (20 s) and the rest
 
 
 @ray.remote
@@ -91,8 +92,20 @@ def run_batch(runs, results, logs_dir, address=None, retries=1, stream=sys.stder
                     progress.failed += 1
             progress.show(len(pending))
         return added
+    except KeyboardInterrupt:
+        _cancel(pending)
+        raise
     finally:
         ray.shutdown()
+
+
+def _cancel(pending):
+    """Ctrl-C: each running run is interrupted where it is (Ray raises KeyboardInterrupt in its
+    task), so it stops its processes itself before Ray's workers go; the reapers catch any that
+    does not."""
+    for ref in pending:
+        ray.cancel(ref)
+    ray.wait(list(pending), num_returns=len(pending), timeout=CANCEL_WAIT_S)
 
 
 def _record(ref, run, logs_dir):

@@ -29,13 +29,15 @@ def test_a_command_runs_on_its_own_master_and_its_json_line_is_the_result(tmp_pa
     assert archive is None
 
 
-def test_the_time_limit_kills_the_whole_group_and_the_logs_come_back(tmp_path):
+def test_the_time_limit_stops_every_process_of_the_run_and_the_logs_come_back(tmp_path):
     # background jobs (which ignore SIGINT), a grandchild and the foreground: all stopped;
     # their durations mark them for pgrep
-    command = "(sleep 300.11; true) & bash -c 'sleep 300.12; true' & echo started; sleep 300.13"
-    record, archive = run_isolated(Run(scenario="slow", command=command, time_limit=2), str(tmp_path))
-    assert record["state"] == "timeout" and "2 s" in record["error"]
-    assert 2.0 <= record["wall_s"] < 15.0
+    # and one in a session of its own ignoring SIGINT and SIGTERM, as roslaunch's nodes are in theirs
+    command = ("(sleep 300.11; true) & bash -c 'sleep 300.12; true' & "
+               "setsid bash -c \"trap '' INT TERM; sleep 300.14; true\" & echo started; sleep 300.13")
+    record, archive = run_isolated(Run(scenario="slow", command=command, time_limit=8), str(tmp_path))
+    assert record["state"] == "timeout" and "8 s" in record["error"]
+    assert 8.0 <= record["wall_s"] < 30.0  # the limit counts from the run's start, its master's included
     assert not alive("sleep 300.1"), "a process of the run survived its time limit"
     assert not alive("roscore -p %s" % record["master"].rsplit(":", 1)[1])
     with tarfile.open(fileobj=io.BytesIO(archive)) as tar:
@@ -54,6 +56,7 @@ def test_a_failing_check_is_recorded_with_its_status_and_a_launch_runs_beside_it
     assert "check exited with status 3" in record["error"]
     with tarfile.open(fileobj=io.BytesIO(archive)) as tar:
         assert b"hello" in tar.extractfile("logs/check.log").read()  # the launch's talker was heard
+    assert not alive("pub -r 10 /chatter"), "the launch's node (in a session of its own) outlived the run"
 
 
 def test_two_runs_at_once_do_not_see_each_others_topics(tmp_path):

@@ -14,6 +14,18 @@ def alive(pattern):
     return subprocess.run(["pgrep", "-f", pattern], stdout=subprocess.DEVNULL).returncode == 0
 
 
+def carrying_a_run_token():
+    """Any process of any run: each carries its run's SIM_BATCH_RUN_TOKEN in its environment."""
+    for pid in filter(str.isdigit, os.listdir("/proc")):
+        try:
+            with open("/proc/%s/environ" % pid, "rb") as f:
+                if b"SIM_BATCH_RUN_TOKEN=" in f.read():
+                    return True
+        except OSError:
+            pass
+    return False
+
+
 def sim_batch(*args, **kwargs):
     return subprocess.run([RUN] + list(args), capture_output=True, text=True, timeout=180, **kwargs)
 
@@ -74,6 +86,10 @@ scenarios:
     assert done.returncode == 0, done.stderr
     [r] = records(out)
     assert (r["state"], r["result"], r["attempts"]) == ("ok", {"survived": True}, 2)
+    deadline = time.monotonic() + 30  # the killed attempt's master and rosout: its reaper stops them
+    while carrying_a_run_token() and time.monotonic() < deadline:
+        time.sleep(0.2)
+    assert not carrying_a_run_token(), "the killed attempt's processes live on"
 
     flag.unlink()
     out.unlink()
@@ -107,9 +123,9 @@ scenarios:
     assert batch_run.returncode == 130, stderr
     assert "keeps every finished run" in stderr
     deadline = time.monotonic() + 30
-    while (alive(marker) or alive("roscore -p")) and time.monotonic() < deadline:
+    while (alive(marker) or carrying_a_run_token()) and time.monotonic() < deadline:
         time.sleep(0.2)
     assert not alive(marker), "a run's process outlived Ctrl-C"
-    assert not alive("roscore -p"), "a run's roscore outlived Ctrl-C"
+    assert not carrying_a_run_token(), "a run's process (its master, rosout, ...) outlived Ctrl-C"
     assert not alive("raylet"), "Ray's local cluster outlived Ctrl-C"
     assert [r["run_id"] for r in records(out)] == ["quick"]
