@@ -26,8 +26,11 @@ def main():
     state = rospy.ServiceProxy("/gazebo/get_model_state", GetModelState)
     while not state(model_name=args.model).success:  # spawned a little after the world
         rospy.sleep(0.1)
-    start = state(model_name=args.model).pose.position
     command = rospy.Publisher(args.cmd_vel, Twist, queue_size=1)
+    while command.get_num_connections() == 0 and not rospy.is_shutdown():  # its drive plugin listens
+        rospy.sleep(0.1)
+    rospy.sleep(0.5)  # of sim time: the robot settles on its wheels after its spawn
+    start = state(model_name=args.model).pose.position
     forward = Twist()
     forward.linear.x = args.speed
     end_time = rospy.get_time() + args.seconds

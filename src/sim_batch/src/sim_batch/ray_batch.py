@@ -1,5 +1,6 @@
-"""A batch's runs as Ray tasks: `ray.init()` makes a cluster of this machine with no set-up;
-an address (or RAY_ADDRESS) sends the same tasks to a real cluster. Ray schedules (each task
+"""A batch's runs as Ray tasks: by default a new Ray cluster of this machine (no set-up); an
+address (or RAY_ADDRESS; `auto`: the `ray start` cluster of this machine) sends the same tasks to
+a real cluster. Ray schedules (each task
 reserves the run's num_cpus), retries a task whose worker died (max_retries) and brings the
 results back; this module only records them as they come.
 """
@@ -16,7 +17,7 @@ RAY_INIT = {"include_dashboard": False, "log_to_driver": False, "configure_loggi
 CANCEL_WAIT_S = 40.0  # a run's stop: its jobs' SIGINT grace (20 s) and the rest
 
 
-@ray.remote
+@ray.remote(num_cpus=0)  # never waits for a CPU the runs hold: they wait on it
 class Attempts:
     """How many times each run started: Ray retries a task whose worker died, and the record
     says so."""
@@ -29,6 +30,9 @@ class Attempts:
 
     def count(self, run_id):
         return self.counts.get(run_id, 0)
+
+    def runs_started(self):
+        return len(self.counts)
 
 
 def _run_task(run, attempts):
@@ -70,13 +74,14 @@ def run_batch(runs, results, logs_dir, address=None, retries=1, stream=sys.stder
     todo = [run for run in runs if run.run_id not in results.done()]
     if not todo:
         return []
-    ray.init(address=address or os.environ.get("RAY_ADDRESS") or None, **RAY_INIT)
+    # "local": a cluster of this machine, new, even when a `ray start` cluster runs here (RAY_ADDRESS=auto joins that)
+    ray.init(address=address or os.environ.get("RAY_ADDRESS") or "local", **RAY_INIT)
     try:
         attempts = Attempts.remote()
         task = ray.remote(max_retries=retries)(_run_task)
         pending = {task.options(num_cpus=run.num_cpus, name=run.run_id).remote(run, attempts): run for run in todo}
         progress = Progress(len(todo), stream)
-        progress.show(len(pending))
+        progress.show(0)
         added = []
         while pending:
             ready, _ = ray.wait(list(pending), num_returns=1, timeout=1.0)
@@ -90,7 +95,8 @@ def run_batch(runs, results, logs_dir, address=None, retries=1, stream=sys.stder
                     progress.done += 1
                 else:
                     progress.failed += 1
-            progress.show(len(pending))
+            # running: started and not finished (the rest of `pending` waits for a free CPU)
+            progress.show(ray.get(attempts.runs_started.remote()) - progress.done - progress.failed)
         return added
     except KeyboardInterrupt:
         _cancel(pending)

@@ -1,5 +1,6 @@
 """docs/BATCH.md's example, run as a user runs it: m_robot driven for 2 s of sim time from two
-headings in the maze (examples/m_robot_drive.yaml), with real Ray, roscores and simulators."""
+headings in the maze (examples/m_robot_drive.yaml), with real Ray (the tests' two-node cluster,
+conftest.py), roscores and simulators."""
 import json
 import os
 import subprocess
@@ -9,9 +10,10 @@ RUN = os.path.join(HERE, "..", "..", "scripts", "run")
 EXAMPLE = os.path.join(HERE, "..", "..", "examples", "m_robot_drive.yaml")
 
 
-def test_the_m_robot_example_drives_both_ways_on_sim_time(tmp_path):
+def test_the_m_robot_example_drives_both_ways_on_sim_time(tmp_path, ray_cluster):
     out = tmp_path / "drive.jsonl"
-    done = subprocess.run([RUN, EXAMPLE, "--out", str(out)], capture_output=True, text=True, timeout=300)
+    done = subprocess.run([RUN, EXAMPLE, "--out", str(out), "--address", ray_cluster], capture_output=True, text=True,
+                          timeout=300)
     assert done.returncode == 0, done.stderr
     records = [json.loads(line) for line in out.read_text().splitlines()]
     assert sorted(r["params"]["yaw"] for r in records) == [1.5708, 3.1416]

@@ -1,6 +1,7 @@
-"""`sim_batch run` end to end with real Ray on this machine (ray.init's local cluster) and real
-roscores: records appended, a rerun skipping them, a failed run's logs, a worker killed mid-run
-retried and recorded, and Ctrl-C leaving nothing behind while keeping what finished."""
+"""`sim_batch run` end to end with real Ray and real roscores: records appended, a rerun skipping
+them, a failed run's logs, a worker killed mid-run retried and recorded (on the tests' two-node
+cluster, conftest.py), and Ctrl-C leaving nothing behind while keeping what finished (on the
+local cluster `sim_batch run` makes by default)."""
 import json
 import os
 import signal
@@ -12,6 +13,11 @@ RUN = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scri
 
 def alive(pattern):
     return subprocess.run(["pgrep", "-f", pattern], stdout=subprocess.DEVNULL).returncode == 0
+
+
+def pids(pattern):
+    found = subprocess.run(["pgrep", "-f", pattern], capture_output=True, text=True).stdout.split()
+    return {int(p) for p in found}
 
 
 def carrying_a_run_token():
@@ -35,7 +41,7 @@ def records(path):
         return [json.loads(line) for line in f]
 
 
-def test_a_batch_runs_records_each_run_and_a_rerun_skips_them(tmp_path):
+def test_a_batch_runs_records_each_run_and_a_rerun_skips_them(tmp_path, ray_cluster):
     batch = tmp_path / "batch.yaml"
     batch.write_text("""
 scenarios:
@@ -49,7 +55,7 @@ scenarios:
     time_limit: 60
 """)
     out = tmp_path / "results.jsonl"
-    first = sim_batch(str(batch), "--out", str(out))
+    first = sim_batch(str(batch), "--out", str(out), "--address", ray_cluster)
     assert first.returncode == 1, first.stderr  # one run failed
     got = {r["run_id"]: r for r in records(out)}
     assert sorted(got) == ["broken", "square[x=2,seed=1]", "square[x=2,seed=2]", "square[x=3,seed=1]",
@@ -65,13 +71,13 @@ scenarios:
     assert os.path.getsize(broken["logs"]) > 0 and broken["logs"].startswith(str(out) + ".logs")
     assert "broken failed" in first.stderr
 
-    again = sim_batch(str(batch), "--out", str(out))
+    again = sim_batch(str(batch), "--out", str(out), "--address", ray_cluster)
     assert again.returncode == 0, again.stderr
     assert "5 already in" in again.stderr
     assert len(records(out)) == 5
 
 
-def test_a_worker_killed_mid_run_is_retried_and_recorded(tmp_path):
+def test_a_worker_killed_mid_run_is_retried_and_recorded(tmp_path, ray_cluster):
     flag = tmp_path / "killed_once"
     batch = tmp_path / "batch.yaml"
     # the run's shell is the worker's child: its first attempt kills the worker (kill -9 $PPID)
@@ -82,7 +88,7 @@ scenarios:
     time_limit: 60
 """ % (flag, flag))
     out = tmp_path / "results.jsonl"
-    done = sim_batch(str(batch), "--out", str(out))
+    done = sim_batch(str(batch), "--out", str(out), "--address", ray_cluster)
     assert done.returncode == 0, done.stderr
     [r] = records(out)
     assert (r["state"], r["result"], r["attempts"]) == ("ok", {"survived": True}, 2)
@@ -93,7 +99,7 @@ scenarios:
 
     flag.unlink()
     out.unlink()
-    done = sim_batch(str(batch), "--out", str(out), "--retries", "0")
+    done = sim_batch(str(batch), "--out", str(out), "--retries", "0", "--address", ray_cluster)
     [r] = records(out)
     assert r["state"] == "lost" and "Worker" in r["error"] and r["attempts"] == 1
     assert done.returncode == 1
@@ -111,6 +117,7 @@ scenarios:
     seeds: 2
 """)
     out = tmp_path / "results.jsonl"
+    raylets_before = pids("raylet")  # the tests' shared cluster's
     # as a terminal runs it: its own process group, which Ctrl-C signals whole
     batch_run = subprocess.Popen([RUN, str(batch), "--out", str(out)], stdout=subprocess.PIPE,
                                  stderr=subprocess.PIPE, text=True, start_new_session=True)
@@ -127,5 +134,5 @@ scenarios:
         time.sleep(0.2)
     assert not alive(marker), "a run's process outlived Ctrl-C"
     assert not carrying_a_run_token(), "a run's process (its master, rosout, ...) outlived Ctrl-C"
-    assert not alive("raylet"), "Ray's local cluster outlived Ctrl-C"
+    assert not pids("raylet") - raylets_before, "the batch's local Ray cluster outlived Ctrl-C"
     assert [r["run_id"] for r in records(out)] == ["quick"]
