@@ -1,6 +1,5 @@
 """A batch's runs as Ray tasks: by default a new Ray cluster of this machine (no set-up); an
-address (or RAY_ADDRESS; `auto`: the `ray start` cluster of this machine) sends the same tasks to
-a real cluster. Ray schedules (each task
+address (or RAY_ADDRESS) sends the same tasks to a real cluster. Ray schedules (each task
 reserves the run's num_cpus), retries a task whose worker died (max_retries) and brings the
 results back; this module only records them as they come.
 """
@@ -74,7 +73,8 @@ def run_batch(runs, results, logs_dir, address=None, retries=1, stream=sys.stder
     todo = [run for run in runs if run.run_id not in results.done()]
     if not todo:
         return []
-    # "local": a cluster of this machine, new, even when a `ray start` cluster runs here (RAY_ADDRESS=auto joins that)
+    # "local": a new cluster of this machine, even when another runs here. Joining one found
+    # running (Ray's default) failed in the tests: the attempts actor was cancelled before it ran.
     ray.init(address=address or os.environ.get("RAY_ADDRESS") or "local", **RAY_INIT)
     try:
         attempts = Attempts.remote()
