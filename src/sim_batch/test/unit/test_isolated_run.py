@@ -11,9 +11,7 @@ import time
 from sim_batch.isolated_run import last_json_line, run_isolated
 from sim_batch.scenario import Run
 
-def alive(pattern):
-    """A process whose command line holds `pattern` (pgrep leaves itself out; no shell around it)."""
-    return subprocess.run(["pgrep", "-f", pattern], stdout=subprocess.DEVNULL).returncode == 0
+from process_probe import alive
 
 
 def test_a_command_runs_on_its_own_master_and_its_json_line_is_the_result(tmp_path):

@@ -8,28 +8,9 @@ import signal
 import subprocess
 import time
 
+from process_probe import alive, carrying_a_run_token, pids
+
 RUN = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "run")
-
-
-def alive(pattern):
-    return subprocess.run(["pgrep", "-f", pattern], stdout=subprocess.DEVNULL).returncode == 0
-
-
-def pids(pattern):
-    found = subprocess.run(["pgrep", "-f", pattern], capture_output=True, text=True).stdout.split()
-    return {int(p) for p in found}
-
-
-def carrying_a_run_token():
-    """Any process of any run: each carries its run's SIM_BATCH_RUN_TOKEN in its environment."""
-    for pid in filter(str.isdigit, os.listdir("/proc")):
-        try:
-            with open("/proc/%s/environ" % pid, "rb") as f:
-                if b"SIM_BATCH_RUN_TOKEN=" in f.read():
-                    return True
-        except OSError:
-            pass
-    return False
 
 
 def sim_batch(*args, **kwargs):
