@@ -21,6 +21,7 @@ class MRobotNavigationTest(NavigationChecks, unittest.TestCase):
     WALLS = os.path.join(M_ROBOT_SIM, 'config', 'capstone_map_walls.yaml')
     OUTLINE = (0.26, 0.22)   # base 0.24 long, wheels 0.22 across; the camera's 0.02 m lip ahead
     XY_TOLERANCE = 0.15      # planner.yaml's xy_goal_tolerance
+    RTF = 2.0  # 115 s -> 58 s; at 3x the local planner found no trajectory for a second in one run of two
 
     def test_1_it_reaches_goals_across_the_maze(self):
         # Up the east side, west along the north strip, down the west side, back to the start.

@@ -16,6 +16,8 @@ class MRobotMappingTest(MappingRunChecks, unittest.TestCase):
     CMD_VEL = '/cmd_vel'
     WALLS = os.path.join(PACKAGE, 'config', 'capstone_map_walls.yaml')
     LASER_RANGE = 6.0
+    # Real time: at 2x and 3x its RMS error grows from 18 to 24 and 33 mm (the Pioneer's does not).
+    RTF = 1.0
     TOUR = os.path.join(PACKAGE, 'config', 'mapping_tour.yaml')
 
 

@@ -15,6 +15,7 @@ from actionlib_msgs.msg import GoalStatus
 from gazebo_msgs.srv import GetModelState
 from move_base_msgs.msg import MoveBaseAction, MoveBaseActionResult, MoveBaseGoal
 
+from bullet_sim_testing.gazebo import set_real_time_factor
 from bullet_sim_testing.mobile import yaw_of
 from bullet_sim_testing.walls import load_walls
 
@@ -49,12 +50,15 @@ class NavigationChecks:
     XY_TOLERANCE = None      # the local planner's xy_goal_tolerance (m)
     MAPPER_ERROR = 0.06      # m the mapper's pose may be off the truth
     GOAL_TIMEOUT = 120.0     # s of sim time per goal
+    RTF = None               # the simulator's target real-time factor for the tests (None: the launch's)
 
     @classmethod
     def setUpClass(cls):
         rospy.init_node('navigation_checks_' + cls.MODEL, anonymous=True)
         rospy.wait_for_service('/gazebo/get_model_state', timeout=60)
         cls.get_state = rospy.ServiceProxy('/gazebo/get_model_state', GetModelState, persistent=True)
+        if cls.RTF:
+            set_real_time_factor(cls.RTF)
         cls.walls = load_walls(cls.WALLS)
         cls.client = actionlib.SimpleActionClient('move_base', MoveBaseAction)
         if not cls.client.wait_for_server(rospy.Duration(120)):
