@@ -17,7 +17,6 @@ import argparse
 import json
 import os
 import signal
-import socket
 import statistics
 import subprocess
 import sys
@@ -45,14 +44,8 @@ scenarios:
 """
 
 
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
 def by_hand():
-    from sim_batch.isolated_run import wait_for_launch
+    from sim_batch.isolated_run import free_port, wait_for_launch
     port = free_port()
     env = dict(os.environ, ROS_MASTER_URI="http://127.0.0.1:%d" % port)
     start = time.monotonic()

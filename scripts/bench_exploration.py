@@ -1,10 +1,13 @@
 #!/usr/bin/python3
 """Autonomous exploration over seeded start poses (issue 12): each robot's whole headless system
 (simulator, mapper, move_base and find_frontier or explore_lite's explore) explores its maze from N
-random starts, one fresh bring-up per run on a private roscore.
+random starts, one fresh bring-up per run, the runs as one sim_batch batch (docs/BATCH.md: each on
+a ROS master of its own; on this machine one at a time by default, or --cpus-per-run 1 for two at
+once, or on a Ray cluster with --address).
 
   bench_exploration.py [--robot m_robot|pioneer] [--explorer find_frontier|explore] [--starts N]
                        [--seed S] [--rtf F] [--mapper gmapping|hector]
+                       [--out results.jsonl] [--address HOST:PORT] [--cpus-per-run C]
 
   m_robot  find_frontier explore_maze.launch in the Capstone maze (hector_mapping, laser 6 m), paced
            at 30x real time (2 cores run its whole stack at 25-27x; --rtf 0: as fast as it goes)
@@ -20,6 +23,10 @@ offline (bullet_sim_testing.exploration.best_tour: greedy viewpoints with a 360-
 nearest-first with 2-opt), wall contacts, the map against the walls, and the real-time factor
 (sim over wall time from the first goal to completion).
 
+Each run is `roslaunch <launch> explorer:=E x:=X y:=Y yaw:=YAW` with this script's --check beside
+it (it watches the run and prints one JSON line); the batch's points name the start (`start`, and
+`starts_seed`, the --seed that drew it). The tables are built from sim_batch's results file.
+
 Output: one line per run, then per robot and explorer
   exploration (<robot>, <explorer>): S/N reached >= 99 %, to 95 % median T95 s sim (W95 s wall), to
   completion median T s sim (W s wall), distance / best tour median D, C wall contacts, map within
@@ -31,7 +38,6 @@ import math
 import os
 import random
 import statistics
-import subprocess
 import sys
 import time
 
@@ -39,8 +45,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(ROOT, 'src', 'bullet_sim_testing', 'src'))
-from bench_node_rtf import (launch_on_private_master, rosgraph_service_up, run_with_processes,  # noqa: E402
-                            set_real_time_factor, wait_until)
+import bench_batch  # noqa: E402
+from bench_node_rtf import set_real_time_factor  # noqa: E402
 from bullet_sim_testing.exploration import ReachableArea, best_tour, wall_clearance  # noqa: E402
 from bullet_sim_testing.walls import load_walls  # noqa: E402
 from explore_demo import Watch  # noqa: E402
@@ -70,25 +76,26 @@ def draw_starts(robot, count, seed):
              round(rng.uniform(-math.pi, math.pi), 3)) for k in picks]
 
 
-def one_run(name, explorer, start, rtf, mapper, procs):
-    """Explores once; prints a RESULT line (json) for the parent."""
+def check(name, explorer, start, rtf, mapper):
+    """One run's check: the launch is up on this run's master (ROS_MASTER_URI); waits for the first
+    exploration goal, paces the simulator, watches until the explorer reports completion (or the
+    robot's timeout of sim time) and prints one JSON line."""
     import rospy
     robot = ROBOTS[name]
     x, y, yaw = start
     walls = load_walls(robot['walls'])
     area = ReachableArea(walls, robot['inscribed'], (x, y))
-    launch = robot['launch'] + ['explorer:=' + explorer, 'x:=%g' % x, 'y:=%g' % y, 'yaw:=%g' % yaw]
-    if name == 'pioneer':  # explore.launch's choice of mapper
-        launch = launch + ['mapper:=' + mapper]
     # hector_mapping's map frame starts at the spawn pose; slam_gmapping's is the world's.
     map_in_world = (0.0, 0.0, 0.0) if mapper == 'gmapping' else (x, y, yaw)
-    master = launch_on_private_master(procs, 'bench_exploration', launch, node=False)
-    master.setParam('/use_sim_time', True)
     rospy.init_node('bench_exploration', anonymous=True, disable_signals=True)
-    wait_until(lambda: rosgraph_service_up(master, '/gazebo/set_physics_properties'), 90, 'the simulator', procs)
+    rospy.wait_for_service('/gazebo/set_physics_properties', timeout=90)
     watch = Watch(area, walls, map_in_world, '/%s/status' % explorer, robot['model'], robot['outline'],
                   robot['laser_range'])
-    wait_until(lambda: watch.status.startswith('exploring'), 120, 'the first exploration goal', procs)
+    deadline = time.monotonic() + 120
+    while not watch.status.startswith('exploring'):
+        if time.monotonic() > deadline:
+            sys.exit('bench_exploration: no first exploration goal in 120 s (status: %r)' % watch.status)
+        time.sleep(0.1)
     set_real_time_factor(rtf)
     sim0, wall0 = rospy.get_time(), time.monotonic()
     wall_at_95 = None
@@ -100,12 +107,9 @@ def one_run(name, explorer, start, rtf, mapper, procs):
     time.sleep(1.0)  # the last map
     t95 = watch.time_to(0.95)
     precision, mean, coverage, _ = watch.map_accuracy(map_in_world)
-    if os.environ.get('BENCH_KEEP_LOGS'):  # the map and path, to look at with the logs
-        subprocess.run(['rosrun', 'hector_style_mapping', 'save_map', '-f', os.path.join(procs.log_dir, 'map')],
-                       env=os.environ, stdout=subprocess.DEVNULL)
-    print('RESULT ' + json.dumps(dict(
+    print(json.dumps(dict(
         complete=watch.completed_at is not None, status=watch.status, explored=watch.share(),
-        sim_to_95=(t95 - sim0) if t95 else None, wall_to_95=wall_at_95, sim=sim, wall=wall,
+        sim_to_95=(t95 - sim0) if t95 else None, wall_to_95=wall_at_95, sim=sim, wall=wall, sim_time=rospy.get_time(),
         distance=watch.distance(), contacts=watch.contacts, map_precision=precision, map_mean=mean)), flush=True)
 
 
@@ -114,30 +118,46 @@ def median(values):
     return statistics.median(values) if values else float('nan')
 
 
-def bench(name, explorer, starts, seed, rtf, mapper):
+def scenario(name, explorer, starts, seed, rtf, mapper):
+    """The batch's scenario: one run per start."""
+    robot = ROBOTS[name]
+    args = {'explorer': explorer, 'x': '${x}', 'y': '${y}', 'yaw': '${yaw}'}
+    if name == 'pioneer':  # explore.launch's choice of mapper
+        args['mapper'] = mapper
+    return {
+        'name': 'exploration_%s_%s' % (name, explorer),
+        'launch': ' '.join(robot['launch']),
+        'args': args,
+        'check': bench_batch.check_command(__file__, '--robot', name, '--explorer', explorer, '--rtf', rtf,
+                                           '--mapper', mapper, '--check', '${x}', '${y}', '${yaw}'),
+        'points': [{'starts_seed': seed, 'start': k + 1, 'x': x, 'y': y, 'yaw': yaw}
+                   for k, (x, y, yaw) in enumerate(draw_starts(robot, starts, seed))],
+        # sim seconds at >= 1x real time, and the bring-up
+        'time_limit': robot['timeout'] + 180.0,
+    }
+
+
+def bench(name, explorer, starts, seed, rtf, mapper, args):
     robot = ROBOTS[name]
     walls = load_walls(robot['walls'])
+    records, _ = bench_batch.run(scenario(name, explorer, starts, seed, rtf, mapper), args, 2, 'bench_exploration')
     runs = []
-    for k, start in enumerate(draw_starts(robot, starts, seed)):
-        area = ReachableArea(walls, robot['inscribed'], start[:2])
-        tour, _ = best_tour(area, walls, start[:2], robot['laser_range'])
-        out = subprocess.run([sys.executable, os.path.abspath(__file__), '--robot', name, '--explorer', explorer,
-                              '--rtf', str(rtf), '--mapper', mapper, '--one'] + [str(v) for v in start],
-                             stdout=subprocess.PIPE, text=True)
-        line = next((ln for ln in out.stdout.splitlines() if ln.startswith('RESULT ')), None)
-        if line is None:
-            print('  start %2d (%5.2f, %5.2f, %5.2f): the run failed (exit %d)' % (k + 1, *start, out.returncode),
-                  flush=True)
+    for record in records:
+        p = record.get('params') or {}
+        k, start = p.get('start'), (p.get('x'), p.get('y'), p.get('yaw'))
+        r = bench_batch.result_of(record)
+        if r is None:
+            print('  %s: %s' % (record['run_id'], bench_batch.describe_failure(record)), flush=True)
             runs.append(None)
             continue
-        r = json.loads(line[len('RESULT '):])
-        r['tour'] = tour
+        area = ReachableArea(walls, robot['inscribed'], start[:2])
+        r['tour'], _ = best_tour(area, walls, start[:2], robot['laser_range'])
         runs.append(r)
         print('  start %2d (%5.2f, %5.2f, %5.2f): %s, explored %5.1f %%, 95 %% at %s s sim, done at %6.1f s sim '
-              '(%5.1f s wall), driven %5.1f m (best tour %4.1f m), %d contacts, map %.1f %% within 0.1 m' % (
-                  k + 1, *start, 'complete' if r['complete'] else 'NOT COMPLETE', 100 * r['explored'],
+              '(%5.1f s wall), driven %5.1f m (best tour %4.1f m), %d contacts, map %.1f %% within 0.1 m [%s]' % (
+                  k, *start, 'complete' if r['complete'] else 'NOT COMPLETE', 100 * r['explored'],
                   '%5.1f' % r['sim_to_95'] if r['sim_to_95'] is not None else '  -  ', r['sim'], r['wall'],
-                  r['distance'], tour, r['contacts'], 100 * r['map_precision']), flush=True)
+                  r['distance'], r['tour'], r['contacts'], 100 * r['map_precision'], record.get('host')), flush=True)
         if r['explored'] < 0.99:  # what the node said when it stopped short
             print('    status: %s' % r['status'], flush=True)
     done = [r for r in runs if r]
@@ -168,13 +188,13 @@ def main():
     parser.add_argument('--rtf', type=float, help='target real-time factor (default: the robot\'s, 0 = as fast as it goes)')
     parser.add_argument('--mapper', choices=['gmapping', 'hector'],
                         help='the Pioneer\'s mapper: slam_gmapping (default) or hector_mapping (m_robot: always hector)')
-    parser.add_argument('--one', type=float, nargs=3, metavar=('X', 'Y', 'YAW'), help=argparse.SUPPRESS)
+    bench_batch.add_arguments(parser)
+    parser.add_argument('--check', type=float, nargs=3, metavar=('X', 'Y', 'YAW'), help=argparse.SUPPRESS)
     args = parser.parse_args()
-    if args.one:
-        rtf = ROBOTS[args.robot]['rtf'] if args.rtf is None else args.rtf
-        mapper = mapper_of(args.robot, args.mapper)
-        return run_with_processes('bench_exploration', lambda procs: one_run(args.robot, args.explorer, args.one, rtf,
-                                                                              mapper, procs))
+    if args.check:
+        return check(args.robot, args.explorer, args.check, args.rtf, args.mapper)
+    if args.out and not (args.robot and args.explorer):
+        parser.error('--out needs one --robot and one --explorer (a results file holds one batch)')
     status = 0
     for name in [args.robot] if args.robot else sorted(ROBOTS):
         for explorer in [args.explorer] if args.explorer else ['find_frontier', 'explore']:
@@ -183,7 +203,7 @@ def main():
             print('command: scripts/bench_exploration.py --robot %s --explorer %s --starts %d --seed %d --rtf %g%s' % (
                 name, explorer, args.starts, args.seed, rtf, ' --mapper ' + mapper if name == 'pioneer' else ''),
                 flush=True)
-            status |= bench(name, explorer, args.starts, args.seed, rtf, mapper)
+            status |= bench(name, explorer, args.starts, args.seed, rtf, mapper, args)
     return status
 
 

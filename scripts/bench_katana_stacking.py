@@ -4,11 +4,14 @@ cans end up as one standing tower, why not when they don't, how long a can takes
 detected cans are from where they stand.
 
   bench_katana_stacking.py [--layouts N] [--first-seed S]      (after . scripts/env.sh)
+                           [--out results.jsonl] [--address HOST:PORT] [--cpus-per-run C]
 
-Each layout is one run of `roslaunch katana_pick stack_cans.launch cans_seed:=SEED` on a roscore of
-its own (a fresh simulator: three cans drawn by katana_arm_gazebo's can_layouts.random_layout), in
-a process of its own; once stack_cans has published the cans it found, the simulator runs as fast
-as it goes until stack_cans exits. Then, from /gazebo/get_model_state:
+Each layout is one run of `roslaunch katana_pick stack_cans.launch cans_seed:=SEED` (a fresh
+simulator: three cans drawn by katana_arm_gazebo's can_layouts.random_layout), the layouts one
+sim_batch batch over the seeds (docs/BATCH.md: each run on a ROS master of its own; one at a time
+on this machine by default, or on a Ray cluster with --address). This script's --check watches
+each run: once stack_cans has published the cans it found, the simulator runs as fast as it goes
+until stack_cans exits. Then, from /gazebo/get_model_state:
 
   - success: the three cans stand one on another on the tower's can (each level within 1 cm of
     its height, within 2 cm of the tower's axis, tilted less than 10 degrees), still so 3 s later;
@@ -24,13 +27,14 @@ import json
 import math
 import os
 import re
-import subprocess
 import sys
+import threading
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from bench_node_rtf import launch_on_private_master, run_with_processes, set_real_time_factor, wait_until  # noqa: E402
+import bench_batch  # noqa: E402
+from bench_node_rtf import set_real_time_factor  # noqa: E402
 
 TABLE = 0.4
 CAN_HEIGHT = 0.12
@@ -40,32 +44,48 @@ def tilt(q):
     return math.degrees(2 * math.asin(min(1.0, math.hypot(q.x, q.y))))
 
 
-def one_layout(seed, procs):
-    """Runs one layout; prints one JSON line with what happened."""
+def wait_until(predicate, timeout, what):
+    deadline = time.monotonic() + timeout
+    while not predicate():
+        if time.monotonic() > deadline:
+            sys.exit('bench_katana_stacking: no %s in %.0f s' % (what, timeout))
+        time.sleep(0.1)
+
+
+def check(seed):
+    """One run's check: stack_cans.launch is up on this run's master (ROS_MASTER_URI); prints one
+    JSON line with what happened."""
     from katana_arm_gazebo.can_layouts import random_layout
     from katana_pick.stacking import choose_tower
     layout = random_layout(3, seed)
     names = ['can_%d' % (i + 1) for i in range(3)]
     tower = names[choose_tower(layout)]
 
-    launch_on_private_master(procs, 'bench_katana_stacking',
-                             ['katana_pick', 'stack_cans.launch', 'cans_seed:=%d' % seed])
     import rosnode
     import rospy
     from gazebo_grasp_plugin_ros.msg import GazeboGraspEvent
     from gazebo_msgs.srv import GetModelState, GetWorldProperties
     from geometry_msgs.msg import PoseArray
+    from rosgraph_msgs.msg import Log
 
+    rospy.init_node('bench_katana_stacking', anonymous=True, disable_signals=True)
+    lock, said = threading.Lock(), []  # what stack_cans logged, as its terminal showed it
+
+    def on_log(message):
+        if message.name == '/stack_cans':
+            with lock:
+                said.append(message.msg)
+    rospy.Subscriber('/rosout', Log, on_log, queue_size=100)
     events = []
     rospy.Subscriber('/gazebo/grasp_events', GazeboGraspEvent, lambda e: events.append((e.object, e.attached)))
     detected = []
     rospy.Subscriber('/stack_cans/cans', PoseArray, lambda m: detected.append(m))
-    wait_until(lambda: bool(detected), 90, 'stack_cans to publish the cans it found', procs)
+    wait_until(lambda: bool(detected), 90, 'cans published by stack_cans')
     world = rospy.ServiceProxy('/gazebo/get_world_properties', GetWorldProperties)
     get_state = rospy.ServiceProxy('/gazebo/get_model_state', GetModelState)
     set_real_time_factor(0.0)
     sim0, wall0 = world().sim_time, time.monotonic()
-    wait_until(lambda: '/stack_cans' not in rosnode.get_node_names(), 600, 'stack_cans to finish', procs)
+    wait_until(lambda: '/stack_cans' not in rosnode.get_node_names(), 600, 'end of stack_cans')
     sim_s, wall_s = world().sim_time - sim0, time.monotonic() - wall0
 
     def poses():
@@ -87,7 +107,8 @@ def one_layout(seed, procs):
                       (before[n].position.x, before[n].position.y, before[n].position.z)) < 0.005
         for k, n in enumerate(stacked))
 
-    log = procs.log_tail('launch', lines=400)
+    with lock:
+        log = '\n'.join(said)
     cause = None
     if not standing:
         moved = [n for n in names if n != tower]
@@ -108,7 +129,7 @@ def one_layout(seed, procs):
     errors_line = re.findall(r'stack_cans: .*(?:unreachable|nothing between|ended the move|did not).*', log)
     print(json.dumps({'seed': seed, 'success': standing, 'cause': cause, 'sim_s': sim_s, 'wall_s': wall_s,
                       'found': len(seen), 'detection_errors': errors, 'events': events,
-                      'errors': errors_line[:3]}), flush=True)
+                      'errors': errors_line[:3], 'sim_time': world().sim_time}), flush=True)
 
 
 def summarise(results, command):
@@ -137,32 +158,33 @@ def summarise(results, command):
     print('command: %s' % command)
 
 
+def scenario(layouts, first_seed):
+    return {'name': 'katana_stacking', 'launch': 'katana_pick stack_cans.launch', 'args': {'cans_seed': '${seed}'},
+            'check': bench_batch.check_command(__file__, '--check', '${seed}'),
+            'seeds': list(range(first_seed, first_seed + layouts)), 'time_limit': 900}
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument('--layouts', type=int, default=50)
     parser.add_argument('--first-seed', type=int, default=1)
-    parser.add_argument('--one-layout', type=int, help=argparse.SUPPRESS)
+    bench_batch.add_arguments(parser)
+    parser.add_argument('--check', type=int, metavar='SEED', help=argparse.SUPPRESS)
     args = parser.parse_args()
-    if args.one_layout is not None:
-        return run_with_processes('bench_katana_stacking', lambda procs: one_layout(args.one_layout, procs))
+    if args.check is not None:
+        return check(args.check)
     command = 'scripts/bench_katana_stacking.py --layouts %d --first-seed %d' % (args.layouts, args.first_seed)
+    records, _ = bench_batch.run(scenario(args.layouts, args.first_seed), args, 2, 'bench_katana_stacking')
     results = []
-    for seed in range(args.first_seed, args.first_seed + args.layouts):
-        run = subprocess.run([sys.executable, os.path.abspath(__file__), '--one-layout', str(seed)],
-                             stdout=subprocess.PIPE, text=True, timeout=900)
-        lines = [line for line in run.stdout.splitlines() if line.startswith('{')]
-        if run.returncode != 0 or not lines:
-            print('seed %d: the run failed (exit %d): %s' % (seed, run.returncode, run.stdout[-500:]), flush=True)
-            results.append({'seed': seed, 'success': False, 'cause': 'run failed', 'sim_s': 0, 'wall_s': 0,
-                            'found': 0, 'detection_errors': [], 'errors': []})
-            if len(results) == 3 and all(r['cause'] == 'run failed' for r in results):
-                print('bench_katana_stacking: the first three runs failed to run at all; is the workspace '
-                      'built and scripts/env.sh sourced?', file=sys.stderr)
-                return 1
+    for record in records:
+        r = bench_batch.result_of(record)
+        if r is None:
+            print('%s: the run failed: %s' % (record['run_id'], bench_batch.describe_failure(record)), flush=True)
+            results.append({'seed': record.get('seed'), 'success': False, 'cause': 'run failed', 'sim_s': 0,
+                            'wall_s': 0, 'found': 0, 'detection_errors': [], 'errors': []})
             continue
-        r = json.loads(lines[-1])
         print('seed %3d: %s  sim %.1f s, wall %.1f s, %d cans found' % (
-            seed, 'stacked' if r['success'] else r['cause'], r['sim_s'], r['wall_s'], r['found']), flush=True)
+            r['seed'], 'stacked' if r['success'] else r['cause'], r['sim_s'], r['wall_s'], r['found']), flush=True)
         results.append(r)
     summarise(results, command)
     return 0

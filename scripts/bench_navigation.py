@@ -1,12 +1,17 @@
 #!/usr/bin/python3
 """Navigation success rate, time to goal and whole-system real-time factor (issue 11): each robot's
-navigation bring-up (simulator, mapper, move_base), headless on a private roscore at the robot's
-pace (m_robot 20x real time, the Pioneer 10x: what the whole stack keeps up with on 2 cores;
---rtf 0 runs as fast as the simulator goes), drives to seeded random reachable goals one after
-the other.
+navigation bring-up (simulator, mapper, move_base), headless at the robot's pace (m_robot 20x
+real time, the Pioneer 10x: what the whole stack keeps up with on 2 cores; --rtf 0 runs as fast
+as the simulator goes), drives to seeded random reachable goals one after the other.
 
-  bench_navigation.py [--robot m_robot|pioneer] [--goals N] [--seed S] [--rtf F | --realtime]
-                      [--mapper hector|gmapping] [--cpu] [--trace CSV]
+  bench_navigation.py [--robot m_robot|pioneer] [--goals N] [--seeds K] [--first-seed S]
+                      [--rtf F | --realtime] [--mapper hector|gmapping] [--cpu] [--trace CSV]
+                      [--out results.jsonl] [--address HOST:PORT] [--cpus-per-run C]
+
+The runs are split by seed: one run (a fresh bring-up, N goals one after the other) per seed, the
+runs one sim_batch batch (docs/BATCH.md: each on a ROS master of its own; one at a time on this
+machine by default, or on a Ray cluster with --address). This script's --check drives each run
+and prints one JSON line; the table is built from sim_batch's results file.
 
   m_robot  find_frontier m_robot_navigation.launch (navfn + DWAPlannerROS) in the Capstone maze
   pioneer  pioneer_2dnav pioneer_navigation.launch (navfn + TrajectoryPlannerROS) in its 8 x 8 m maze
@@ -22,12 +27,13 @@ every 10 ms of sim time).
 The real-time factor is sim time over wall time from the first goal to the last.
 
 Output lines (one per robot):
-  navigation (<robot>): N goals, S succeeded (P %), C wall contacts, time/lower bound median M
-  (worst W), real-time factor R (sim T s in wall U s)
+  navigation (<robot>): N goals (K seeds), S succeeded (P %), C wall contacts, time/lower bound
+  median M (worst W), real-time factor R (sim T s in wall U s)
 and with --cpu each process's CPU time over the same span, in % of one core (this benchmark's own
 process included: it checks the outline against the walls every 10 ms of sim time).
 """
 import argparse
+import json
 import heapq
 import math
 import os
@@ -40,8 +46,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(ROOT, 'src', 'bullet_sim_testing', 'src'))
-from bench_node_rtf import (each_robot_in_its_own_process, launch_on_private_master,  # noqa: E402
-                            rosgraph_service_up, run_with_processes, set_real_time_factor, wait_until)
+import bench_batch  # noqa: E402
+from bench_node_rtf import set_real_time_factor  # noqa: E402
 from process_cpu import ProcessCpu  # noqa: E402
 from bullet_sim_testing.mobile import yaw_of  # noqa: E402
 from bullet_sim_testing.navigation import outline, touches_a_wall  # noqa: E402
@@ -159,7 +165,17 @@ class Truth:
                 self.contacts += 1
 
 
-def bench(name, goals, seed, rtf, procs, trace_file=None, cpu=False, mapper='hector'):
+def wait_until(predicate, timeout, what):
+    deadline = time.monotonic() + timeout
+    while not predicate():
+        if time.monotonic() > deadline:
+            sys.exit('bench_navigation: no %s in %.0f s' % (what, timeout))
+        time.sleep(0.1)
+
+
+def check(name, goals, seed, rtf, trace_file=None, cpu=False, mapper='hector'):
+    """One run's check: the robot's navigation launch is up on this run's master (ROS_MASTER_URI);
+    drives to `goals` goals drawn from `seed`, one after the other, and prints one JSON line."""
     import actionlib
     import rospy
     from actionlib_msgs.msg import GoalStatus
@@ -175,26 +191,22 @@ def bench(name, goals, seed, rtf, procs, trace_file=None, cpu=False, mapper='hec
 
     # hector_mapping's map frame starts at the spawn pose; slam_gmapping's is the odom frame, which
     # the Pioneer's drive (odometrySource world) puts at the world's origin.
-    launch, map_in_world = robot['launch'], robot['spawn']
-    if mapper == 'gmapping':
-        launch, map_in_world = launch + ['mapper:=gmapping'], (0.0, 0.0, 0.0)
+    map_in_world = (0.0, 0.0, 0.0) if mapper == 'gmapping' else robot['spawn']
     mx, my, myaw = map_in_world
-    master = launch_on_private_master(procs, 'bench_navigation', launch, node=False)
-    master.setParam('/use_sim_time', True)  # before init_node, so that rospy's clock is the simulator's
-    rospy.init_node('bench_navigation', anonymous=True, disable_signals=True)
-    wait_until(lambda: rosgraph_service_up(master, '/gazebo/set_physics_properties'), 90, 'the simulator', procs)
+    rospy.init_node('bench_navigation', anonymous=True, disable_signals=True)  # the launch set /use_sim_time
+    rospy.wait_for_service('/gazebo/set_physics_properties', timeout=90)
     client = actionlib.SimpleActionClient('move_base', MoveBaseAction)
-    wait_until(lambda: client.wait_for_server(rospy.Duration(1.0)), 120, 'move_base', procs)
+    wait_until(lambda: client.wait_for_server(rospy.Duration(1.0)), 120, 'move_base')
     truth = Truth(robot['model'], walls, robot['outline'])
     if trace_file:
         truth.follow_mapper(map_in_world)
-    wait_until(lambda: truth.pose is not None, 30, '/gazebo/model_states', procs)
+    wait_until(lambda: truth.pose is not None, 30, '/gazebo/model_states')
     if rtf != 1.0:
         set_real_time_factor(rtf)
 
     results = []  # (succeeded, sim seconds, lower bound seconds)
     wall_start, sim_start = time.monotonic(), rospy.get_time()
-    cpu_use = ProcessCpu(procs.log_dir) if cpu else None
+    cpu_use = ProcessCpu(os.environ['ROS_LOG_DIR']) if cpu else None  # the run's nodes log there
     contacts_start = truth.contacts
     for k in range(goals):
         with truth.lock:
@@ -228,38 +240,73 @@ def bench(name, goals, seed, rtf, procs, trace_file=None, cpu=False, mapper='hec
         said_reached = finished and client.get_state() == GoalStatus.SUCCEEDED
         # Reached by ground truth too: within the tolerance, give or take the mapper's error.
         ok = said_reached and error <= robot['xy_tolerance'] + LOCALISATION_ALLOWANCE
-        results.append((ok, took, bound))
+        results.append({'goal': [round(gx, 3), round(gy, 3)], 'ok': ok, 'outcome': None,
+                        'sim_s': took, 'bound_s': bound, 'error_m': error})
         if ok:
-            outcome = 'reached'
+            results[-1]['outcome'] = 'reached'
         elif said_reached:
-            outcome = 'FAILED (move_base succeeded, but the robot is beyond tolerance)'
+            results[-1]['outcome'] = 'FAILED (move_base succeeded, but the robot is beyond tolerance)'
         else:
-            outcome = 'FAILED (%s)' % (client.get_goal_status_text() or 'timeout')
-        print('  goal %2d (%5.2f, %5.2f): %s in %5.1f s (lower bound %4.1f s), stopped %.3f m from it' % (
-            k + 1, gx, gy, outcome, took, bound, error), flush=True)
+            results[-1]['outcome'] = 'FAILED (%s)' % (client.get_goal_status_text() or 'timeout')
     wall = time.monotonic() - wall_start
     sim = rospy.get_time() - sim_start
     if trace_file:
         with open(trace_file, 'w') as f, truth.lock:
             f.write('goal,t,x,y,yaw,mapped_t,mapped_x,mapped_y,mapped_yaw\n')
             f.writelines('%d,%.2f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n' % row for row in truth.trace)
-    succeeded = sum(1 for r in results if r[0])
-    ratios = sorted(t / b for ok, t, b in results if ok and b > 0)
+    print(json.dumps({'seed': seed, 'goals': results, 'contacts': truth.contacts - contacts_start, 'sim': sim,
+                      'wall': wall, 'sim_time': rospy.get_time(), 'cpu': cpu_use.report() if cpu_use else None}),
+          flush=True)
+
+
+def scenario(name, goals, seeds, rtf, mapper, trace, cpu):
+    """The batch's scenario: one run (one bring-up, `goals` goals one after the other) per seed."""
+    robot = ROBOTS[name]
+    options = ['--robot', name, '--goals', goals, '--rtf', rtf, '--mapper', mapper] + (['--cpu'] if cpu else [])
+    if trace:  # one file per seed
+        options += ['--trace', '%s.seed${seed}.csv' % os.path.abspath(trace)]
+    return {'name': 'navigation_%s' % name, 'launch': ' '.join(robot['launch']),
+            'args': {'mapper': 'gmapping'} if mapper == 'gmapping' else {},
+            'check': bench_batch.check_command(__file__, *(options + ['--check', '${seed}'])),
+            'seeds': seeds, 'time_limit': 300.0 + goals * 120.0}
+
+
+def bench(name, goals, seeds, rtf, mapper, trace, cpu, args):
+    records, _ = bench_batch.run(scenario(name, goals, seeds, rtf, mapper, trace, cpu), args, 2, 'bench_navigation')
+    results, contacts, sim, wall = [], 0, 0.0, 0.0
+    for record in records:
+        r = bench_batch.result_of(record)
+        if r is None:
+            print('  %s: %s' % (record['run_id'], bench_batch.describe_failure(record)), flush=True)
+            continue
+        print('  seed %d (%s):' % (r['seed'], record.get('host')), flush=True)
+        for k, g in enumerate(r['goals']):
+            print('    goal %2d (%5.2f, %5.2f): %s in %5.1f s (lower bound %4.1f s), stopped %.3f m from it' % (
+                k + 1, g['goal'][0], g['goal'][1], g['outcome'], g['sim_s'], g['bound_s'], g['error_m']), flush=True)
+        if r['cpu']:
+            print('    cpu, %% of one core from the first goal to the last: %s' % r['cpu'], flush=True)
+        results += r['goals']
+        contacts, sim, wall = contacts + r['contacts'], sim + r['sim'], wall + r['wall']
+    planned = goals * len(seeds)
+    succeeded = sum(1 for g in results if g['ok'])
+    ratios = sorted(g['sim_s'] / g['bound_s'] for g in results if g['ok'] and g['bound_s'] > 0)
     median = ratios[len(ratios) // 2] if ratios else float('nan')
     worst = ratios[-1] if ratios else float('nan')
-    print('navigation (%s): %d goals, %d succeeded (%.0f %%), %d wall contacts, time/lower bound median %.2f '
-          '(worst %.2f), real-time factor %.2f (sim %.0f s in wall %.0f s)' % (
-              name, goals, succeeded, 100.0 * succeeded / goals, truth.contacts - contacts_start, median, worst,
-              sim / wall, sim, wall), flush=True)
-    if cpu_use:
-        print('cpu (%s), %% of one core from the first goal to the last: %s' % (name, cpu_use.report()), flush=True)
+    print('navigation (%s): %d goals (%d seeds), %d succeeded (%.0f %%), %d wall contacts, time/lower bound median '
+          '%.2f (worst %.2f), real-time factor %.2f (sim %.0f s in wall %.0f s)' % (
+              name, planned, len(seeds), succeeded, 100.0 * succeeded / planned, contacts, median, worst,
+              sim / wall if wall else float('nan'), sim, wall), flush=True)
+    return 0 if succeeded == planned else 1
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
     parser.add_argument('--robot', choices=sorted(ROBOTS), help='one robot (default: both, each in its own process)')
-    parser.add_argument('--goals', type=int, default=50, help='goals per robot (default 50)')
-    parser.add_argument('--seed', type=int, default=1, help='the goals\' random seed (default 1)')
+    parser.add_argument('--goals', type=int, default=10, help='goals per run, one after the other (default 10)')
+    parser.add_argument('--seeds', type=int, default=5, help='runs per robot, one per seed (default 5)')
+    parser.add_argument('--first-seed', type=int, default=1, help='the first run\'s goals\' random seed (default 1)')
+    parser.add_argument('--seed', type=int, help='one run, with this seed: --first-seed S --seeds 1 (what the '
+                                                 'benchmark did before it was split by seed)')
     parser.add_argument('--rtf', type=float,
                         help='the simulator\'s target real-time factor (default: the robot\'s, m_robot 20, the Pioneer '
                              '10; 0: as fast as it goes)')
@@ -268,21 +315,28 @@ def main():
                         help='the Pioneer\'s mapper: hector_mapping (default) or the report\'s slam_gmapping')
     parser.add_argument('--cpu', action='store_true', help='print each process\'s CPU use (one robot)')
     parser.add_argument('--trace', metavar='CSV',
-                        help='write the true pose and the mapper\'s every 0.25 s of sim time (one robot)')
+                        help='write the true pose and the mapper\'s every 0.25 s of sim time to CSV.seedN.csv')
+    bench_batch.add_arguments(parser)
+    parser.add_argument('--check', type=int, metavar='SEED', help=argparse.SUPPRESS)
     args = parser.parse_args()
     rtf = 1.0 if args.realtime else args.rtf
-    if not args.robot:
-        extra = ['--goals', str(args.goals), '--seed', str(args.seed)] + ([] if rtf is None else ['--rtf', str(rtf)])
-        return each_robot_in_its_own_process(__file__, sorted(ROBOTS), extra)
-    if rtf is None:
-        rtf = ROBOTS[args.robot]['rtf']
+    if args.check is not None:
+        return check(args.robot, args.goals, args.check, rtf, args.trace, args.cpu, args.mapper)
     if args.mapper == 'gmapping' and args.robot != 'pioneer':
         parser.error('--mapper gmapping: only the Pioneer has odometry for slam_gmapping')
-    print('command: scripts/bench_navigation.py --robot %s --goals %d --seed %d --rtf %g%s%s' % (
-        args.robot, args.goals, args.seed, rtf, ' --mapper gmapping' if args.mapper == 'gmapping' else '',
-        ' --cpu' if args.cpu else ''), flush=True)
-    return run_with_processes('bench_navigation', lambda procs: bench(args.robot, args.goals, args.seed, rtf, procs,
-                                                                     args.trace, args.cpu, args.mapper))
+    if args.out and not args.robot:
+        parser.error('--out needs one --robot (a results file holds one batch)')
+    if args.seed is not None:
+        args.first_seed, args.seeds = args.seed, 1
+    seeds = list(range(args.first_seed, args.first_seed + args.seeds))
+    status = 0
+    for name in [args.robot] if args.robot else sorted(ROBOTS):
+        robot_rtf = ROBOTS[name]['rtf'] if rtf is None else rtf
+        print('command: scripts/bench_navigation.py --robot %s --goals %d --seeds %d --first-seed %d --rtf %g%s%s' % (
+            name, args.goals, args.seeds, args.first_seed, robot_rtf,
+            ' --mapper gmapping' if args.mapper == 'gmapping' else '', ' --cpu' if args.cpu else ''), flush=True)
+        status |= bench(name, args.goals, seeds, robot_rtf, args.mapper, args.trace, args.cpu, args)
+    return status
 
 
 if __name__ == '__main__':

@@ -32,7 +32,6 @@ import argparse
 import os
 import shutil
 import signal
-import socket
 import subprocess
 import sys
 import tempfile
@@ -91,12 +90,6 @@ class Processes:
     def stop_all(self):
         for _, proc in reversed(self.procs):  # newest first (the node before the master)
             self.stop(proc)
-
-
-def free_port():
-    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
-        s.bind(('127.0.0.1', 0))
-        return s.getsockname()[1]
 
 
 class Arrivals:
@@ -268,21 +261,38 @@ def run(args, procs):
         print('bullet_sim loop timing (a separate run with --timing)' + log.split('bullet_sim loop timing', 1)[1])
 
 
+class _MasterJobs:
+    """What sim_batch's start_master needs of a job list, over Processes."""
+
+    def __init__(self, procs):
+        self.procs = procs
+
+    def start(self, name, argv, env):
+        return self.procs.start(name, argv, env)
+
+    def stop(self):
+        self.procs.stop_all()
+
+    def tail(self, name):
+        return self.procs.log_tail(name, lines=5)
+
+
 def launch_on_private_master(procs, name, launch_args, node=True):
-    """A roscore of our own on a free port, then `roslaunch LAUNCH_ARGS` against it, and (if node) this
-    process made a ROS node there (service calls need none). Returns the master (rosgraph.Master). The environment is changed for good:
-    call once per process."""
-    port = free_port()
-    env = dict(os.environ, ROS_MASTER_URI='http://127.0.0.1:%d' % port, ROS_IP='127.0.0.1',
-               ROS_HOME=procs.log_dir, ROS_LOG_DIR=os.path.join(procs.log_dir, 'ros_log'))
+    """A roscore of our own on a free port (sim_batch's: the one way this workspace starts a private
+    master), then `roslaunch LAUNCH_ARGS` against it, and (if node) this process made a ROS node
+    there (service calls need none). Returns the master (rosgraph.Master). The environment is
+    changed for good: call once per process."""
+    sys.path.insert(0, os.path.join(HERE, '..', 'src', 'sim_batch', 'src'))
+    from sim_batch.isolated_run import start_master
+    env = dict(os.environ, ROS_IP='127.0.0.1', ROS_HOME=procs.log_dir, ROS_LOG_DIR=os.path.join(procs.log_dir, 'ros_log'))
     env.pop('ROS_HOSTNAME', None)
+    port = start_master(_MasterJobs(procs), env)
+    env['ROS_MASTER_URI'] = 'http://127.0.0.1:%d' % port
     os.environ.clear()
     os.environ.update(env)
     import rosgraph
     import rospy
-    procs.start('roscore', ['roscore', '-p', str(port)], env)
     master = rosgraph.Master('/' + name, master_uri=env['ROS_MASTER_URI'])
-    wait_until(lambda: rosgraph_service_up(master, '/rosout/get_loggers'), 30, 'roscore', procs)
     procs.start('launch', ['roslaunch'] + list(launch_args), env)
     if node:
         rospy.init_node(name, anonymous=True, disable_signals=True)

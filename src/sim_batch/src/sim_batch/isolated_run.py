@@ -11,6 +11,7 @@ last JSON line is the result).
 import io
 import json
 import os
+import resource
 import shlex
 import shutil
 import socket
@@ -33,7 +34,7 @@ LAUNCH_WAIT_S = 60.0       # for the launch's first node (its parameters are set
 def run_isolated(run, scratch_dir=None):
     """Runs `run` (scenario.Run) and returns its record (a dict for the results file) and, for a
     run that did not end "ok", a .tar.gz of its logs (bytes; else None)."""
-    started = time.monotonic()
+    started, cpu_before = time.monotonic(), children_cpu_s()
     folder = tempfile.mkdtemp(prefix="sim_batch_", dir=scratch_dir)
     record = {"run_id": run.run_id, "scenario": run.scenario, "params": run.params, "seed": run.seed,
               "host": socket.gethostname(), "cpu_model": cpu_model(), "sim_s": None, "result": None,
@@ -75,9 +76,18 @@ def run_isolated(run, scratch_dir=None):
     finally:
         jobs.stop()
         record["wall_s"] = round(time.monotonic() - started, 3)
+        record["cpu_s"] = round(children_cpu_s() - cpu_before, 3)
         archive = logs_archive(folder) if record.get("state") != "ok" else None
         shutil.rmtree(folder, ignore_errors=True)
     return record, archive
+
+
+def children_cpu_s():
+    """CPU seconds (user + system) of this process's ended and waited-for descendants: a run's
+    master, launch (with every node roslaunch waited for) and check, once they have stopped. A
+    worker runs one run at a time, so the difference over a run is that run's."""
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
 
 
 class MasterError(RuntimeError):

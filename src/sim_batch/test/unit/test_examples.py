@@ -23,3 +23,22 @@ def test_the_m_robot_example_drives_both_ways_on_sim_time(tmp_path, ray_cluster)
         assert 0.28 < r["result"]["distance"] <= 0.41, r["result"]
         # sim time, not the wall clock: the world's start plus the 2 s driven
         assert 2.0 < r["sim_s"] < 60.0, r["sim_s"]
+
+
+def test_the_sweep_example_gives_each_run_its_max_vel_x(tmp_path):
+    """examples/max_vel_x_sweep.yaml: one run per speed, and the launch each run starts hands that
+    speed to move_base's DWAPlannerROS over planner.yaml's 0.3 (roslaunch --dump-params: the
+    parameters the launch would set, nothing started)."""
+    import yaml
+    from sim_batch.batch_file import load_batch
+    runs = load_batch(os.path.join(HERE, "..", "..", "examples", "max_vel_x_sweep.yaml"))
+    assert [r.params["max_vel_x"] for r in runs] == [0.15, 0.22, 0.3]
+    for run in runs[:2]:
+        package, launch = run.launch.split()
+        dumped = subprocess.run(["roslaunch", "--dump-params", package, launch] + list(run.launch_args),
+                                capture_output=True, text=True, timeout=60, env=dict(os.environ, ROS_HOME=str(tmp_path)))
+        assert dumped.returncode == 0, dumped.stderr
+        params = yaml.safe_load(dumped.stdout)
+        assert params["/move_base/DWAPlannerROS/max_vel_x"] == run.params["max_vel_x"]
+        assert params["/move_base/DWAPlannerROS/max_trans_vel"] == run.params["max_vel_x"]
+        assert params["/move_base/DWAPlannerROS/max_rot_vel"] == 2.0  # the rest as planner.yaml has it

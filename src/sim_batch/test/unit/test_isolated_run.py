@@ -27,6 +27,17 @@ def test_a_command_runs_on_its_own_master_and_its_json_line_is_the_result(tmp_pa
     assert archive is None
 
 
+def test_the_record_counts_the_cpu_time_of_the_runs_processes(tmp_path):
+    burn = ("python3 -c 'import time; t = time.process_time()\nwhile time.process_time() - t < 1.0: pass' "
+            "&& echo '{}'")
+    idle = run_isolated(Run(scenario="idle", command="echo '{}'", time_limit=60), str(tmp_path))[0]
+    busy = run_isolated(Run(scenario="busy", command=burn, time_limit=60), str(tmp_path))[0]
+    assert idle["state"] == busy["state"] == "ok", (idle, busy)
+    # the master's start-up and stop in both; one CPU-second more in the busy one
+    assert 0.0 < idle["cpu_s"] < 5.0, idle
+    assert 0.8 < busy["cpu_s"] - idle["cpu_s"] < 1.8, (idle, busy)
+
+
 def test_the_time_limit_stops_every_process_of_the_run_and_the_logs_come_back(tmp_path):
     # background jobs (which ignore SIGINT), a grandchild and the foreground: all stopped;
     # their durations mark them for pgrep
