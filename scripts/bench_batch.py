@@ -27,8 +27,10 @@ def add_arguments(parser):
 
 def check_command(script, *args):
     """The shell command sim_batch runs as a run's check: this benchmark's script in check mode,
-    with Debian's Python (the venv's sees ROS too, but the benchmarks are written for this one)."""
-    return ' '.join(['/usr/bin/python3', os.path.abspath(script)] + [str(a) for a in args])
+    with Debian's Python. The script is found under the worker's own workspace ($ROOT, which
+    scripts/env.sh sets; the docker/ image's is /workspace), else under this one's."""
+    path = '"${ROOT:-%s}/scripts/%s"' % (ROOT, os.path.basename(script))
+    return ' '.join(['/usr/bin/python3', path] + [str(a) for a in args])
 
 
 def run(scenario, args, default_cpus, name):

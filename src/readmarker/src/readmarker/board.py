@@ -7,6 +7,8 @@ it."""
 import cv2
 import numpy as np
 
+from readmarker import aruco_api
+
 DICTIONARY = cv2.aruco.DICT_6X6_250
 PICTURE_IDS = ((1, 2, 3, 4), (5, 6, 7, 8))
 # Which of a marker's corners (OpenCV's order: top left, top right, bottom right, bottom left of
@@ -22,7 +24,7 @@ def dictionary():
 
 def marker_image(marker_id, size=200):
     """One marker, size x size px, black on white (what the `aruco` tool writes)."""
-    return cv2.aruco.drawMarker(dictionary(), marker_id, size)
+    return aruco_api.marker_image(dictionary(), marker_id, size)
 
 
 def draw_board(pictures, marker=80, gap=8, margin=40, between=80):

@@ -8,6 +8,7 @@ from typing import List, Optional
 import cv2
 import numpy as np
 
+from readmarker.aruco_api import detect_markers, detector_parameters
 from readmarker.board import CROP_SIZE, INNER_CORNER, PICTURE_IDS, dictionary
 
 # A view so oblique that the quadrilateral's shortest side is under this fraction of its longest
@@ -37,9 +38,9 @@ class MarkerReader:
         # The detector's default thresholds the image with three window sizes (3, 13 and 23 px),
         # which is nearly all its cost. One 13 px window finds every marker of an ordinary view in
         # a third of the time, so the full scan runs only for a picture that pass left incomplete.
-        self.full_scan = cv2.aruco.DetectorParameters_create()
+        self.full_scan = detector_parameters()
         self.full_scan.cornerRefinementMethod = cv2.aruco.CORNER_REFINE_SUBPIX
-        self.quick_scan = cv2.aruco.DetectorParameters_create()
+        self.quick_scan = detector_parameters()
         self.quick_scan.cornerRefinementMethod = cv2.aruco.CORNER_REFINE_SUBPIX
         self.quick_scan.adaptiveThreshWinSizeMin = self.quick_scan.adaptiveThreshWinSizeMax = 13
         self.full_scans = 0  # how often the quick pass was not enough
@@ -60,7 +61,7 @@ class MarkerReader:
         return Detection(crops=[self._crop(image, quad, reason) for quad, reason in found], ids=seen)
 
     def _detect(self, grey, parameters):
-        corners, ids, _ = cv2.aruco.detectMarkers(grey, self.dictionary, parameters=parameters)
+        corners, ids = detect_markers(grey, self.dictionary, parameters)
         return corners, [] if ids is None else [int(i) for i in ids.flatten()]
 
     def _crop(self, image, quad, reason):
