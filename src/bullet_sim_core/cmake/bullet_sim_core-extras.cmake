@@ -4,7 +4,11 @@
 # - Bullet's and Eigen's headers, as SYSTEM headers so that -Wall -Wextra stays quiet about them.
 add_definitions(-DBT_USE_DOUBLE_PRECISION)
 find_package(Eigen3 REQUIRED)
-include_directories(SYSTEM /usr/include/bullet ${EIGEN3_INCLUDE_DIR})
+find_path(BULLET_SIM_CORE_BULLET_INCLUDE_DIR btBulletDynamicsCommon.h PATH_SUFFIXES bullet)
+if(NOT BULLET_SIM_CORE_BULLET_INCLUDE_DIR)
+  message(FATAL_ERROR "bullet_sim_core: Bullet's headers (btBulletDynamicsCommon.h) not found: apt-get install libbullet-dev")
+endif()
+include_directories(SYSTEM ${BULLET_SIM_CORE_BULLET_INCLUDE_DIR} ${EIGEN3_INCLUDE_DIR})
 set(BULLET_SIM_CORE_BULLET_LIBRARIES BulletDynamics-float64 BulletCollision-float64 LinearMath-float64)
 # Our headers inline Bullet code, so dependents link Bullet too (this file is read after catkin
 # has set bullet_sim_core_LIBRARIES).

@@ -42,3 +42,18 @@ def test_the_sweep_example_gives_each_run_its_max_vel_x(tmp_path):
         assert params["/move_base/DWAPlannerROS/max_vel_x"] == run.params["max_vel_x"]
         assert params["/move_base/DWAPlannerROS/max_trans_vel"] == run.params["max_vel_x"]
         assert params["/move_base/DWAPlannerROS/max_rot_vel"] == 2.0  # the rest as planner.yaml has it
+
+
+def test_rosrun_finds_ray_from_debians_python(tmp_path, ray_cluster):
+    """`rosrun sim_batch run` starts the catkin-installed script with Debian's python3, which has
+    no Ray: it goes on in the workspace's .venv python3, which has."""
+    batch = tmp_path / "one.yaml"
+    import yaml
+    batch.write_text(yaml.safe_dump({"scenarios": [{"name": "one", "command": "echo '{\"answer\": 42}'",
+                                                    "time_limit": 60}]}))
+    out = tmp_path / "one.jsonl"
+    done = subprocess.run(["rosrun", "sim_batch", "run", str(batch), "--out", str(out), "--address", ray_cluster],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    [record] = [json.loads(line) for line in out.read_text().splitlines()]
+    assert record["state"] == "ok" and record["result"] == {"answer": 42}, record

@@ -1,0 +1,36 @@
+"""catkin's own conventions, kept: Debian's catkin_lint finds nothing in src/ at its warning level
+(every dependency exported, every target, header and script installed, every package a launch
+file uses declared), and every rostest file is registered with add_rostest, so that
+`catkin_make run_tests` runs what scripts/run_tests.py runs."""
+import glob
+import os
+import re
+import subprocess
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SRC = os.path.join(ROOT, 'src')
+# Known, and issue 37's to remove: odometry_slam includes hector_style_mapping's test scene from
+# that package's folder (to go with hector's core as a package of its own).
+KNOWN = [re.compile(r"^odometry_slam: CMakeLists\.txt\(\d+\): warning: target_include_directories\(\) uses "
+                    r"directory '\.\./hector_style_mapping/test/core'")]
+
+
+def test_catkin_lint_finds_no_error_or_warning():
+    done = subprocess.run(['catkin_lint', '-W1', '--offline', SRC], capture_output=True, text=True, timeout=120)
+    problems = [line for line in done.stdout.splitlines() + done.stderr.splitlines()
+                if re.search(r': (error|warning): ', line) and not any(k.search(line) for k in KNOWN)]
+    assert problems == [], '\n'.join(problems)
+
+
+def test_every_rostest_file_is_registered_with_add_rostest():
+    missing = []
+    for test in sorted(glob.glob(os.path.join(SRC, '**', 'test', '*.test'), recursive=True)):
+        if '/tutorials/' in test:  # a tutorial's own files, copied into a workspace by the walkthroughs
+            continue
+        package = os.path.dirname(os.path.dirname(test))
+        relative = os.path.relpath(test, package)
+        with open(os.path.join(package, 'CMakeLists.txt')) as f:
+            cmake = f.read()
+        if not re.search(r'add_rostest(_gtest)?\((\S+ )?%s[ )]' % re.escape(relative), cmake):
+            missing.append(os.path.relpath(test, SRC))
+    assert missing == []
