@@ -73,7 +73,7 @@ MappingNode::MappingNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
       tf_buffer_(ros::Duration(30.0)),
       tf_listener_(tf_buffer_) {
   for (const std::string& name : unknownParameters(private_nh_))
-    ROS_WARN("hector_mapping: %s is not a parameter of hector_mapping (a typo?); ignored", name.c_str());
+    ROS_WARN("hector_mapping: ignored %s: not a parameter of hector_mapping", name.c_str());
 
   scan_subscriber_ = nh_.subscribe(options_.scan_topic, options_.scan_subscriber_queue_size,
                                    &MappingNode::scanCallback, this);

@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 
 #include <ros/console.h>
 
-#include "hector_style_mapping/ros/parameter_reader.h"
+#include "ros_params/reader.h"
 
 namespace hector_style_mapping {
 namespace {
@@ -15,7 +16,7 @@ namespace {
 const char* const kIgnoredParameters[] = {"pub_drawings", "pub_debug_output"};
 
 // Reads every parameter into `o` (or, with o null, only records the names).
-void readAll(ParameterReader& r, NodeOptions* o) {
+void readAll(ros_params::Reader& r, NodeOptions* o) {
   r.read("base_frame", &o->base_frame);
   r.read("map_frame", &o->map_frame);
   r.read("odom_frame", &o->odom_frame);
@@ -56,7 +57,7 @@ void readAll(ParameterReader& r, NodeOptions* o) {
 }  // namespace
 
 std::string loadNodeOptions(const ros::NodeHandle& private_nh, NodeOptions* options) {
-  ParameterReader reader(private_nh);
+  ros_params::Reader reader(private_nh);
   readAll(reader, options);
   const std::string mapper_problems = validate(options->mapper);
   if (!mapper_problems.empty()) reader.problem(mapper_problems);
@@ -83,12 +84,10 @@ std::string loadNodeOptions(const ros::NodeHandle& private_nh, NodeOptions* opti
 }
 
 std::vector<std::string> unknownParameters(const ros::NodeHandle& private_nh) {
-  ParameterReader reader(private_nh);
+  ros_params::Reader reader(private_nh);
   NodeOptions scratch;
   readAll(reader, &scratch);
-  std::vector<std::string> known = reader.names();
-  known.insert(known.end(), std::begin(kIgnoredParameters), std::end(kIgnoredParameters));
-  return reader.unknown(known);
+  return reader.unknown(std::set<std::string>(std::begin(kIgnoredParameters), std::end(kIgnoredParameters)));
 }
 
 }  // namespace hector_style_mapping

@@ -311,7 +311,7 @@ class MappingNodeTest(unittest.TestCase):
                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=60, text=True,
                              env=dict(os.environ))
         self.assertEqual(run.returncode, 1, run.stdout)
-        for text in ('map_resolution', 'map_size: expected an integer, got a string', 'laser_min_dist'):
+        for text in ('map_resolution', "/bad_mapper/map_size: expected an integer, got the string 'abc'", 'laser_min_dist'):
             self.assertIn(text, run.stdout)
 
     def test_9_unknown_parameters_are_named(self):
@@ -324,7 +324,8 @@ class MappingNodeTest(unittest.TestCase):
         finally:
             process.terminate()
             output = process.communicate(timeout=30)[0]
-        self.assertIn('/other/typo_mapper/map_resolutoin is not a parameter of hector_mapping (a typo?)', output)
+        self.assertIn('ignored /other/typo_mapper/map_resolutoin (did you mean map_resolution?): not a parameter of '
+                      'hector_mapping', output)
 
 
 if __name__ == '__main__':

@@ -2,12 +2,11 @@
 
 #include <cmath>
 
-#include "hector_style_mapping/ros/parameter_reader.h"
+#include "ros_params/reader.h"
 
 namespace odometry_slam {
 namespace {
 
-using hector_style_mapping::ParameterReader;
 
 // gmapping's particle filter and likelihood field, which this node does not have (README.md says why).
 const char* const kParticleFilterParameters[] = {
@@ -16,7 +15,7 @@ const char* const kParticleFilterParameters[] = {
 // Accepted and ignored: removed upstream too (the laser's orientation comes from tf).
 const char* const kObsoleteParameters[] = {"inverted_laser"};
 
-void readAll(ParameterReader& r, GmappingOptions* o) {
+void readAll(ros_params::Reader& r, GmappingOptions* o) {
   r.read("base_frame", &o->base_frame);
   r.read("map_frame", &o->map_frame);
   r.read("odom_frame", &o->odom_frame);
@@ -26,8 +25,8 @@ void readAll(ParameterReader& r, GmappingOptions* o) {
   o->tf_delay = o->transform_publish_period;
   r.read("tf_delay", &o->tf_delay);
   double value = 0.0;
-  if (r.readIfSet("maxRange", &value)) o->max_range = value;
-  if (r.readIfSet("maxUrange", &value)) o->max_usable_range = value;
+  if (r.read("maxRange", &value)) o->max_range = value;
+  if (r.read("maxUrange", &value)) o->max_usable_range = value;
   OdometrySlamOptions& s = o->slam;
   r.read("delta", &s.delta);
   r.read("xmin", &s.xmin);
@@ -47,7 +46,7 @@ void readAll(ParameterReader& r, GmappingOptions* o) {
 }  // namespace
 
 std::string loadGmappingOptions(const ros::NodeHandle& private_nh, GmappingOptions* options) {
-  ParameterReader reader(private_nh);
+  ros_params::Reader reader(private_nh);
   readAll(reader, options);
   for (const char* name : kParticleFilterParameters)
     if (private_nh.hasParam(name)) options->particle_filter_parameters_set.push_back(name);
@@ -76,13 +75,12 @@ std::string loadGmappingOptions(const ros::NodeHandle& private_nh, GmappingOptio
 }
 
 std::vector<std::string> unknownGmappingParameters(const ros::NodeHandle& private_nh) {
-  ParameterReader reader(private_nh);
+  ros_params::Reader reader(private_nh);
   GmappingOptions scratch;
   readAll(reader, &scratch);
-  std::vector<std::string> known = reader.names();
-  known.insert(known.end(), std::begin(kParticleFilterParameters), std::end(kParticleFilterParameters));
-  known.insert(known.end(), std::begin(kObsoleteParameters), std::end(kObsoleteParameters));
-  return reader.unknown(known);
+  std::set<std::string> also(std::begin(kParticleFilterParameters), std::end(kParticleFilterParameters));
+  also.insert(std::begin(kObsoleteParameters), std::end(kObsoleteParameters));
+  return reader.unknown(also);
 }
 
 }  // namespace odometry_slam

@@ -50,7 +50,7 @@ SlamGmappingNode::SlamGmappingNode(ros::NodeHandle nh, ros::NodeHandle private_n
       tf_buffer_(ros::Duration(30.0)),
       tf_listener_(tf_buffer_) {
   for (const std::string& name : unknownGmappingParameters(private_nh_))
-    ROS_WARN("slam_gmapping: %s is not a parameter of slam_gmapping (a typo?); ignored", name.c_str());
+    ROS_WARN("slam_gmapping: ignored %s: not a parameter of slam_gmapping", name.c_str());
   if (!options_.particle_filter_parameters_set.empty()) {
     std::string names;
     for (const std::string& name : options_.particle_filter_parameters_set) names += (names.empty() ? "" : ", ") + name;

@@ -150,7 +150,8 @@ class SlamGmappingFaults(unittest.TestCase):
         code, output = self.run_with('_linearUpdte:=0.5', '_particles:=80', '_xmin:=-5.0', '_ymin:=-5.0',
                                      '_xmax:=5.0', '_ymax:=5.0')
         self.assertIsNone(code, 'slam_gmapping stopped:\n' + output)
-        self.assertIn('/gmapping_params/linearUpdte is not a parameter of slam_gmapping (a typo?)', output)
+        self.assertIn('ignored /gmapping_params/linearUpdte (did you mean linearUpdate?): not a parameter of '
+                      'slam_gmapping', output)
         self.assertIn("particles: parameters of gmapping's particle filter", output)
         self.assertIn('200 x 200 cells of 0.050 m', output)
 
