@@ -5,6 +5,7 @@
 #include <nav_msgs/Path.h>
 
 #include "move_base/ros_params.h"
+#include "ros_params/reader.h"
 
 namespace move_base {
 
@@ -12,29 +13,26 @@ namespace nc = navigation_core;
 
 namespace {
 
-nc::NavfnOptions readOptions(const ros::NodeHandle& nh, bool global_planner) {
+nc::NavfnOptions readOptions(ros_params::Reader& r, bool global_planner) {
   nc::NavfnOptions o;
-  o.allow_unknown = param(nh, "allow_unknown", true);
-  o.default_tolerance = param(nh, "default_tolerance", 0.0);
+  o.allow_unknown = r.get("allow_unknown", true);
+  o.default_tolerance = r.get("default_tolerance", 0.0);
   if (global_planner) {
     // global_planner's other choices change its paths; we plan as navfn (its old_navfn_behavior).
-    if (!param(nh, "use_dijkstra", true) || param(nh, "use_grid_path", false) || !param(nh, "use_quadratic", true))
+    if (!r.get("use_dijkstra", true) || r.get("use_grid_path", false) || !r.get("use_quadratic", true))
       ROS_WARN("%s: use_dijkstra, use_quadratic and use_grid_path are not honoured: this GlobalPlanner plans as navfn "
-               "does (Dijkstra, quadratic interpolation, gradient descent).", nh.getNamespace().c_str());
+               "does (Dijkstra, quadratic interpolation, gradient descent).", r.path("").c_str());
   }
   return o;
 }
 
-}  // namespace
+// Upstream's parameters that this planner accepts without reading: they change nothing here.
+const std::set<std::string> kAcceptedWithoutEffect = {
+    "visualize_potential", "planner_window_x", "planner_window_y", "planner_costmap_publish_frequency",
+    "old_navfn_behavior", "lethal_cost", "neutral_cost", "cost_factor", "publish_potential", "orientation_mode",
+    "orientation_window_size", "outline_map", "use_dijkstra", "use_quadratic", "use_grid_path"};
 
-const std::set<std::string>& GlobalPlannerROS::knownParams() {
-  static const std::set<std::string> names = {
-      "allow_unknown", "default_tolerance", "visualize_potential", "planner_window_x", "planner_window_y",
-      "planner_costmap_publish_frequency", "use_dijkstra", "use_quadratic", "use_grid_path", "old_navfn_behavior",
-      "lethal_cost", "neutral_cost", "cost_factor", "publish_potential", "orientation_mode", "orientation_window_size",
-      "outline_map"};
-  return names;
-}
+}  // namespace
 
 GlobalPlannerROS::GlobalPlannerROS(const std::string& type, CostmapROS& costmap) : costmap_(costmap) {
   if (type == "navfn/NavfnROS") {
@@ -46,7 +44,9 @@ GlobalPlannerROS::GlobalPlannerROS(const std::string& type, CostmapROS& costmap)
                                 "\" is not a planner this move_base has (navfn/NavfnROS, global_planner/GlobalPlanner)");
   }
   ros::NodeHandle nh("~" + name_);
-  planner_ = nc::NavfnPlanner(readOptions(nh, name_ == "GlobalPlanner"));
+  ros_params::Reader params(nh);
+  planner_ = nc::NavfnPlanner(readOptions(params, name_ == "GlobalPlanner"));
+  reportParams(params, kAcceptedWithoutEffect);
   plan_pub_ = nh.advertise<nav_msgs::Path>("plan", 1);
   make_plan_srv_ = nh.advertiseService("make_plan", &GlobalPlannerROS::onMakePlan, this);
 }

@@ -8,6 +8,7 @@
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 
 #include "move_base/ros_params.h"
+#include "ros_params/reader.h"
 
 namespace move_base {
 
@@ -16,32 +17,32 @@ namespace nc = navigation_core;
 namespace {
 
 // ~TrajectoryPlannerROS, with base_local_planner's defaults.
-void readTrajectoryPlanner(const ros::NodeHandle& nh, nc::LocalPlannerOptions& o, nc::GoalApproachOptions& g) {
-  o.acc_lim_x = param(nh, "acc_lim_x", 2.5);
-  o.acc_lim_theta = param(nh, "acc_lim_theta", 3.2);
-  o.max_vel_x = param(nh, "max_vel_x", 0.5);
-  o.min_vel_x = param(nh, "min_vel_x", 0.1);
-  o.max_vel_theta = param(nh, "max_vel_theta", 1.0);
-  o.min_vel_theta = param(nh, "min_vel_theta", -1.0);
-  o.min_in_place_vel_theta = param(nh, "min_in_place_vel_theta", 0.4);
-  o.escape_vel = renamedParam(nh, "escape_vel", "backup_vel", -0.1);
-  o.sim_time = param(nh, "sim_time", 1.0);
-  o.sim_granularity = param(nh, "sim_granularity", 0.025);
-  o.angular_sim_granularity = param(nh, "angular_sim_granularity", o.sim_granularity);
-  o.vx_samples = param(nh, "vx_samples", 3);
-  o.vtheta_samples = param(nh, "vtheta_samples", 20);
-  o.meter_scoring = param(nh, "meter_scoring", false);
-  o.path_distance_bias = param(nh, "pdist_scale", 0.6);
-  o.goal_distance_bias = param(nh, "gdist_scale", 0.8);
-  o.occdist_scale = param(nh, "occdist_scale", 0.01);
-  o.heading_lookahead = param(nh, "heading_lookahead", 0.325);
-  o.dwa = param(nh, "dwa", true);
-  if (param(nh, "holonomic_robot", true))
+void readTrajectoryPlanner(ros_params::Reader& r, nc::LocalPlannerOptions& o, nc::GoalApproachOptions& g) {
+  o.acc_lim_x = r.get("acc_lim_x", 2.5);
+  o.acc_lim_theta = r.getRenamed("acc_lim_theta", "acc_lim_th", 3.2);
+  o.max_vel_x = r.get("max_vel_x", 0.5);
+  o.min_vel_x = r.get("min_vel_x", 0.1);
+  o.max_vel_theta = r.get("max_vel_theta", 1.0);
+  o.min_vel_theta = r.get("min_vel_theta", -1.0);
+  o.min_in_place_vel_theta = r.get("min_in_place_vel_theta", 0.4);
+  o.escape_vel = r.getRenamed("escape_vel", "backup_vel", -0.1);
+  o.sim_time = r.get("sim_time", 1.0);
+  o.sim_granularity = r.get("sim_granularity", 0.025);
+  o.angular_sim_granularity = r.get("angular_sim_granularity", o.sim_granularity);
+  o.vx_samples = r.get("vx_samples", 3);
+  o.vtheta_samples = r.get("vtheta_samples", 20);
+  o.meter_scoring = r.get("meter_scoring", false);
+  o.path_distance_bias = r.get("pdist_scale", 0.6);
+  o.goal_distance_bias = r.get("gdist_scale", 0.8);
+  o.occdist_scale = r.get("occdist_scale", 0.01);
+  o.heading_lookahead = r.get("heading_lookahead", 0.325);
+  o.dwa = r.get("dwa", true);
+  if (r.get("holonomic_robot", true))
     ROS_INFO("%s/holonomic_robot is true (base_local_planner's default): this planner samples no sideways "
-             "velocities, as for the differential and skid-steer robots it drives.", nh.getNamespace().c_str());
-  g.xy_goal_tolerance = param(nh, "xy_goal_tolerance", 0.10);
-  g.yaw_goal_tolerance = param(nh, "yaw_goal_tolerance", 0.05);
-  g.latch_xy_goal_tolerance = param(nh, "latch_xy_goal_tolerance", false);
+             "velocities, as for the differential and skid-steer robots it drives.", r.path("").c_str());
+  g.xy_goal_tolerance = r.get("xy_goal_tolerance", 0.10);
+  g.yaw_goal_tolerance = r.get("yaw_goal_tolerance", 0.05);
+  g.latch_xy_goal_tolerance = r.get("latch_xy_goal_tolerance", false);
   g.trans_stopped_vel = g.rot_stopped_vel = 1e-2;  // TrajectoryPlannerROS's fixed values
   g.max_vel_theta = o.max_vel_theta;
   g.min_in_place_vel_theta = o.min_in_place_vel_theta;
@@ -49,68 +50,59 @@ void readTrajectoryPlanner(const ros::NodeHandle& nh, nc::LocalPlannerOptions& o
 
 // ~DWAPlannerROS, with dwa_local_planner's defaults; the names it had before Kinetic are honoured
 // with a warning (upstream ignores some of them silently).
-void readDwaPlanner(const ros::NodeHandle& nh, nc::LocalPlannerOptions& o, nc::GoalApproachOptions& g) {
-  o.acc_lim_x = param(nh, "acc_lim_x", 2.5);
-  o.acc_lim_theta = renamedParam(nh, "acc_lim_theta", "acc_lim_th", 3.2);
-  const double max_trans = renamedParam(nh, "max_vel_trans", "max_trans_vel", 0.55);
-  const double min_trans = renamedParam(nh, "min_vel_trans", "min_trans_vel", 0.1);
-  o.max_vel_x = std::min(param(nh, "max_vel_x", 0.55), max_trans);
-  o.min_vel_x = param(nh, "min_vel_x", 0.0);
-  const double max_rot = renamedParam(nh, "max_vel_theta", "max_rot_vel", 1.0);
-  const double min_rot = renamedParam(nh, "min_vel_theta", "min_rot_vel", 0.4);
+void readDwaPlanner(ros_params::Reader& r, nc::LocalPlannerOptions& o, nc::GoalApproachOptions& g) {
+  o.acc_lim_x = r.get("acc_lim_x", 2.5);
+  o.acc_lim_theta = r.getRenamed("acc_lim_theta", "acc_lim_th", 3.2);
+  const double max_trans = r.getRenamed("max_vel_trans", "max_trans_vel", 0.55);
+  const double min_trans = r.getRenamed("min_vel_trans", "min_trans_vel", 0.1);
+  o.max_vel_x = std::min(r.get("max_vel_x", 0.55), max_trans);
+  o.min_vel_x = r.get("min_vel_x", 0.0);
+  const double max_rot = r.getRenamed("max_vel_theta", "max_rot_vel", 1.0);
+  const double min_rot = r.getRenamed("min_vel_theta", "min_rot_vel", 0.4);
   o.max_vel_theta = max_rot;
   o.min_vel_theta = -max_rot;
   o.min_in_place_vel_theta = min_rot;
   o.min_vel_trans = min_trans;
   o.escape_vel = -std::max(min_trans, 0.1);
-  o.sim_time = param(nh, "sim_time", 1.7);
-  o.sim_granularity = param(nh, "sim_granularity", 0.025);
-  o.angular_sim_granularity = param(nh, "angular_sim_granularity", 0.1);
-  o.vx_samples = param(nh, "vx_samples", 3);
-  o.vtheta_samples = renamedParam(nh, "vth_samples", "vtheta_samples", 20);
+  o.sim_time = r.get("sim_time", 1.7);
+  o.sim_granularity = r.get("sim_granularity", 0.025);
+  o.angular_sim_granularity = r.get("angular_sim_granularity", 0.1);
+  o.vx_samples = r.get("vx_samples", 3);
+  o.vtheta_samples = r.getRenamed("vth_samples", "vtheta_samples", 20);
   // DWA scales its biases by the costmap's resolution: distances in metres.
   o.meter_scoring = true;
-  o.path_distance_bias = param(nh, "path_distance_bias", 32.0);
-  o.goal_distance_bias = param(nh, "goal_distance_bias", 24.0);
-  o.occdist_scale = param(nh, "occdist_scale", 0.01);
-  o.heading_lookahead = param(nh, "forward_point_distance", 0.325);
-  o.dwa = param(nh, "use_dwa", true);
-  if (param(nh, "max_vel_y", 0.1) != 0.0 || param(nh, "min_vel_y", -0.1) != 0.0)
+  o.path_distance_bias = r.get("path_distance_bias", 32.0);
+  o.goal_distance_bias = r.get("goal_distance_bias", 24.0);
+  o.occdist_scale = r.get("occdist_scale", 0.01);
+  o.heading_lookahead = r.get("forward_point_distance", 0.325);
+  o.dwa = r.get("use_dwa", true);
+  if (r.get("max_vel_y", 0.1) != 0.0 || r.get("min_vel_y", -0.1) != 0.0)
     ROS_INFO("%s: max_vel_y / min_vel_y are not zero: this planner samples no sideways velocities, as for the "
-             "differential and skid-steer robots it drives.", nh.getNamespace().c_str());
-  g.xy_goal_tolerance = param(nh, "xy_goal_tolerance", 0.10);
-  g.yaw_goal_tolerance = param(nh, "yaw_goal_tolerance", 0.05);
-  g.latch_xy_goal_tolerance = param(nh, "latch_xy_goal_tolerance", false);
-  g.trans_stopped_vel = param(nh, "trans_stopped_vel", 0.1);
-  g.rot_stopped_vel = renamedParam(nh, "theta_stopped_vel", "rot_stopped_vel", 0.1);
+             "differential and skid-steer robots it drives.", r.path("").c_str());
+  g.xy_goal_tolerance = r.get("xy_goal_tolerance", 0.10);
+  g.yaw_goal_tolerance = r.get("yaw_goal_tolerance", 0.05);
+  g.latch_xy_goal_tolerance = r.get("latch_xy_goal_tolerance", false);
+  g.trans_stopped_vel = r.get("trans_stopped_vel", 0.1);
+  g.rot_stopped_vel = r.getRenamed("theta_stopped_vel", "rot_stopped_vel", 0.1);
   g.max_vel_theta = max_rot;
   g.min_in_place_vel_theta = min_rot;
 }
 
-}  // namespace
-
-const std::set<std::string>& LocalPlannerROS::knownParams(const std::string& name) {
+// Upstream's parameters of each planner that this one accepts without reading: they change nothing
+// here (publishing debug clouds, scoring variants it does not have). Not warned about.
+const std::set<std::string>& acceptedWithoutEffect(const std::string& name) {
   static const std::set<std::string> trajectory = {
-      "acc_lim_x", "acc_lim_y", "acc_lim_theta", "acc_lim_th", "max_vel_x", "min_vel_x", "max_vel_theta",
-      "min_vel_theta", "min_in_place_vel_theta", "escape_vel", "backup_vel", "holonomic_robot", "y_vels",
-      "yaw_goal_tolerance", "xy_goal_tolerance", "latch_xy_goal_tolerance", "sim_time", "sim_granularity",
-      "angular_sim_granularity", "vx_samples", "vtheta_samples", "controller_frequency", "meter_scoring",
-      "pdist_scale", "gdist_scale", "occdist_scale", "heading_lookahead", "heading_scoring",
-      "heading_scoring_timestep", "dwa", "publish_cost_grid_pc", "global_frame_id", "oscillation_reset_dist",
-      "escape_reset_dist", "escape_reset_theta", "prune_plan", "simple_attractor", "max_rotational_vel",
-      "min_in_place_rotational_vel", "odom_topic"};
+      "acc_lim_y", "y_vels", "heading_scoring", "heading_scoring_timestep", "publish_cost_grid_pc", "global_frame_id",
+      "oscillation_reset_dist", "escape_reset_dist", "escape_reset_theta", "simple_attractor", "max_rotational_vel",
+      "min_in_place_rotational_vel"};
   static const std::set<std::string> dwa = {
-      "acc_lim_x", "acc_lim_y", "acc_lim_theta", "acc_lim_th", "acc_lim_trans", "max_vel_trans", "min_vel_trans",
-      "max_trans_vel", "min_trans_vel", "max_vel_x", "min_vel_x", "max_vel_y", "min_vel_y", "max_vel_theta",
-      "min_vel_theta", "max_rot_vel", "min_rot_vel", "theta_stopped_vel", "rot_stopped_vel", "trans_stopped_vel",
-      "yaw_goal_tolerance", "xy_goal_tolerance", "latch_xy_goal_tolerance", "sim_time", "sim_granularity",
-      "angular_sim_granularity", "vx_samples", "vy_samples", "vth_samples", "vtheta_samples",
-      "controller_frequency", "path_distance_bias", "goal_distance_bias", "occdist_scale",
-      "forward_point_distance", "stop_time_buffer", "scaling_speed", "max_scaling_factor", "oscillation_reset_dist",
-      "oscillation_reset_angle", "publish_traj_pc", "publish_cost_grid_pc", "global_frame_id", "prune_plan",
-      "use_dwa", "restore_defaults", "twirling_scale", "odom_topic", "holonomic_robot"};
+      "acc_lim_y", "acc_lim_trans", "vy_samples", "stop_time_buffer", "scaling_speed", "max_scaling_factor",
+      "oscillation_reset_dist", "oscillation_reset_angle", "publish_traj_pc", "publish_cost_grid_pc",
+      "global_frame_id", "restore_defaults", "twirling_scale", "holonomic_robot"};
   return name == "DWAPlannerROS" ? dwa : trajectory;
 }
+
+}  // namespace
 
 LocalPlannerROS::LocalPlannerROS(const std::string& type, CostmapROS& costmap, tf2_ros::Buffer& tf,
                                  double controller_frequency)
@@ -124,20 +116,22 @@ LocalPlannerROS::LocalPlannerROS(const std::string& type, CostmapROS& costmap, t
                                 "(base_local_planner/TrajectoryPlannerROS, dwa_local_planner/DWAPlannerROS)");
   }
   ros::NodeHandle nh("~" + name_);
-  if (name_ == "DWAPlannerROS") readDwaPlanner(nh, options_, approach_options_);
-  else readTrajectoryPlanner(nh, options_, approach_options_);
-  // The control period: the planner's own controller_frequency, else move_base's, searched upwards.
-  const double frequency = searchParam(nh, "controller_frequency", controller_frequency);
+  ros_params::Reader params(nh);
+  if (name_ == "DWAPlannerROS") readDwaPlanner(params, options_, approach_options_);
+  else readTrajectoryPlanner(params, options_, approach_options_);
+  // The control period: the planner's own controller_frequency, else move_base's.
+  const double frequency = params.get("controller_frequency", controller_frequency);
   options_.sim_period = frequency > 0 ? 1.0 / frequency : 0.05;
   approach_options_.acc_lim_x = options_.acc_lim_x;
   approach_options_.acc_lim_theta = options_.acc_lim_theta;
   approach_options_.sim_period = options_.sim_period;
-  prune_plan_ = param(nh, "prune_plan", true);
+  prune_plan_ = params.get("prune_plan", true);
   planner_ = std::make_unique<nc::LocalPlanner>(options_);
   approach_ = std::make_unique<nc::GoalApproach>(approach_options_);
 
   ros::NodeHandle node;
-  odom_sub_ = node.subscribe(param<std::string>(nh, "odom_topic", "odom"), 1, &LocalPlannerROS::onOdometry, this);
+  odom_sub_ = node.subscribe(params.get<std::string>("odom_topic", "odom"), 1, &LocalPlannerROS::onOdometry, this);
+  reportParams(params, acceptedWithoutEffect(name_));
   global_plan_pub_ = nh.advertise<nav_msgs::Path>("global_plan", 1);
   local_plan_pub_ = nh.advertise<nav_msgs::Path>("local_plan", 1);
 }

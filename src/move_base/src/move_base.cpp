@@ -8,6 +8,7 @@
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 
 #include "move_base/ros_params.h"
+#include "ros_params/reader.h"
 
 namespace move_base {
 
@@ -42,19 +43,20 @@ bool validQuaternion(const geometry_msgs::Quaternion& q, std::string* why) {
 
 MoveBase::MoveBase(tf2_ros::Buffer& tf) : tf_(tf), private_nh_("~") {
   ros::NodeHandle nh;
-  const std::string global_planner = param<std::string>(private_nh_, "base_global_planner", "navfn/NavfnROS");
+  ros_params::Reader params(private_nh_);
+  const std::string global_planner = params.get<std::string>("base_global_planner", "navfn/NavfnROS");
   const std::string local_planner =
-      param<std::string>(private_nh_, "base_local_planner", "base_local_planner/TrajectoryPlannerROS");
-  planner_frequency_ = param(private_nh_, "planner_frequency", 0.0);
-  controller_frequency_ = param(private_nh_, "controller_frequency", 20.0);
-  planner_patience_ = param(private_nh_, "planner_patience", 5.0);
-  controller_patience_ = param(private_nh_, "controller_patience", 15.0);
-  max_planning_retries_ = param(private_nh_, "max_planning_retries", -1);
-  oscillation_timeout_ = param(private_nh_, "oscillation_timeout", 0.0);
-  oscillation_distance_ = param(private_nh_, "oscillation_distance", 0.5);
-  recovery_behavior_enabled_ = param(private_nh_, "recovery_behavior_enabled", true);
-  make_plan_add_unreachable_goal_ = param(private_nh_, "make_plan_add_unreachable_goal", true);
-  if (param(private_nh_, "shutdown_costmaps", false))
+      params.get<std::string>("base_local_planner", "base_local_planner/TrajectoryPlannerROS");
+  planner_frequency_ = params.get("planner_frequency", 0.0);
+  controller_frequency_ = params.get("controller_frequency", 20.0);
+  planner_patience_ = params.get("planner_patience", 5.0);
+  controller_patience_ = params.get("controller_patience", 15.0);
+  max_planning_retries_ = params.get("max_planning_retries", -1);
+  oscillation_timeout_ = params.get("oscillation_timeout", 0.0);
+  oscillation_distance_ = params.get("oscillation_distance", 0.5);
+  recovery_behavior_enabled_ = params.get("recovery_behavior_enabled", true);
+  make_plan_add_unreachable_goal_ = params.get("make_plan_add_unreachable_goal", true);
+  if (params.get("shutdown_costmaps", false))
     ROS_WARN("~shutdown_costmaps is not supported: the costmaps keep running between goals.");
   if (!(controller_frequency_ > 0)) {
     ROS_ERROR("~controller_frequency must be above 0 (got %g); using 20.", controller_frequency_);
@@ -78,8 +80,8 @@ MoveBase::MoveBase(tf2_ros::Buffer& tf) : tf_(tf), private_nh_("~") {
   } catch (const std::exception& e) {
     throw std::runtime_error(std::string("Failed to create the local planner: ") + e.what());
   }
-  recoveries_ = loadRecoveries(*planner_costmap_, *controller_costmap_, cmd_vel_pub_);
-  warnUnknownParams();
+  recoveries_ = loadRecoveries(params, *planner_costmap_, *controller_costmap_, cmd_vel_pub_);
+  reportParams(params, namespacesAndOthers());
 
   simple_goal_sub_ = ros::NodeHandle("move_base_simple").subscribe("goal", 1, &MoveBase::onSimpleGoal, this);
   make_plan_srv_ = private_nh_.advertiseService("make_plan", &MoveBase::onMakePlan, this);
@@ -103,22 +105,17 @@ MoveBase::~MoveBase() {
   if (planner_thread_.joinable()) planner_thread_.join();
 }
 
-void MoveBase::warnUnknownParams() const {
-  std::set<std::string> known = {
-      "base_global_planner", "base_local_planner", "planner_frequency", "controller_frequency", "planner_patience",
-      "controller_patience", "max_planning_retries", "oscillation_timeout", "oscillation_distance",
-      "recovery_behavior_enabled", "clearing_rotation_allowed", "conservative_reset_dist", "shutdown_costmaps",
-      "make_plan_clear_costmap", "make_plan_add_unreachable_goal", "restore_defaults", "recovery_behaviors",
-      "footprint", "robot_radius", "footprint_padding", "aggressive_reset", "conservative_reset"};
-  std::set<std::string> namespaces = {"global_costmap", "local_costmap", planner_->name(), controller_->name(),
-                                      "conservative_reset", "aggressive_reset", "rotate_recovery"};
-  for (const auto& r : recoveries_) namespaces.insert(r->name);
-  // Parameters of the planners not in use are no mistake.
-  for (const char* other : {"NavfnROS", "GlobalPlanner", "TrajectoryPlannerROS", "DWAPlannerROS"}) namespaces.insert(other);
-  move_base::warnUnknownParams(private_nh_, known, namespaces);
-  move_base::warnUnknownParams(ros::NodeHandle(private_nh_, planner_->name()), GlobalPlannerROS::knownParams(), {});
-  move_base::warnUnknownParams(ros::NodeHandle(private_nh_, controller_->name()),
-                               LocalPlannerROS::knownParams(controller_->name()), {});
+std::set<std::string> MoveBase::namespacesAndOthers() const {
+  // The components' namespaces (each reports its own parameters), the planners not in use (their
+  // parameters are no mistake), what the costmaps search for upwards from their namespaces, and
+  // upstream's parameters this move_base accepts without effect.
+  std::set<std::string> names = {"global_costmap", "local_costmap", planner_->name(), controller_->name(),
+                                 "conservative_reset", "aggressive_reset", "rotate_recovery",
+                                 "NavfnROS", "GlobalPlanner", "TrajectoryPlannerROS", "DWAPlannerROS",
+                                 "footprint", "robot_radius", "footprint_padding",
+                                 "make_plan_clear_costmap", "restore_defaults"};
+  for (const auto& r : recoveries_) names.insert(r->name);
+  return names;
 }
 
 void MoveBase::onSimpleGoal(const geometry_msgs::PoseStampedConstPtr& goal) {

@@ -5,6 +5,7 @@
 #include <geometry_msgs/Twist.h>
 
 #include "move_base/ros_params.h"
+#include "ros_params/reader.h"
 #include "navigation_core/goal_approach.h"
 #include "navigation_core/local_planner.h"
 
@@ -15,16 +16,18 @@ namespace nc = navigation_core;
 ClearCostmapRecovery::ClearCostmapRecovery(const std::string& name, CostmapROS& global, CostmapROS& local)
     : global_(global), local_(local) {
   ros::NodeHandle nh("~" + name);
-  reset_distance_ = param(nh, "reset_distance", 3.0);
-  affected_maps_ = param<std::string>(nh, "affected_maps", "both");
+  ros_params::Reader params(nh);
+  reset_distance_ = params.get("reset_distance", 3.0);
+  affected_maps_ = params.get<std::string>("affected_maps", "both");
   if (affected_maps_ != "both" && affected_maps_ != "global" && affected_maps_ != "local") {
     ROS_ERROR("%s/affected_maps: \"%s\" is none of local, global, both; clearing both.", nh.getNamespace().c_str(),
               affected_maps_.c_str());
     affected_maps_ = "both";
   }
-  if (param(nh, "invert_area_to_clear", false))
+  if (params.get("invert_area_to_clear", false))
     ROS_WARN("%s/invert_area_to_clear is not supported: the area outside the window is cleared.",
              nh.getNamespace().c_str());
+  reportParams(params, {"layer_names", "force_updating"});  // upstream's; every obstacle layer is cleared here
 }
 
 void ClearCostmapRecovery::run() {
@@ -47,13 +50,18 @@ void ClearCostmapRecovery::run() {
 
 RotateRecovery::RotateRecovery(const std::string& name, CostmapROS& local, ros::Publisher& cmd_vel)
     : local_(local), cmd_vel_(cmd_vel) {
-  ros::NodeHandle nh("~" + name), blp("~TrajectoryPlannerROS");
-  sim_granularity_ = param(nh, "sim_granularity", 0.017);
-  frequency_ = param(nh, "frequency", 20.0);
-  acc_lim_theta_ = renamedParam(blp, "acc_lim_theta", "acc_lim_th", 3.2);
-  max_vel_theta_ = renamedParam(blp, "max_vel_theta", "max_rotational_vel", 1.0);
-  min_in_place_vel_theta_ = renamedParam(blp, "min_in_place_vel_theta", "min_in_place_rotational_vel", 0.4);
-  tolerance_ = param(blp, "yaw_goal_tolerance", 0.10);
+  ros_params::Reader params(ros::NodeHandle("~" + name));
+  sim_granularity_ = params.get("sim_granularity", 0.017);
+  frequency_ = params.get("frequency", 20.0);
+  reportParams(params);
+  // As upstream's rotate_recovery: the turn's limits are base_local_planner's, whichever planner runs
+  // (the local planner's own reader reports that namespace when it is TrajectoryPlannerROS).
+  ros_params::Reader blp(ros::NodeHandle("~TrajectoryPlannerROS"));
+  acc_lim_theta_ = blp.getRenamed("acc_lim_theta", "acc_lim_th", 3.2);
+  max_vel_theta_ = blp.getRenamed("max_vel_theta", "max_rotational_vel", 1.0);
+  min_in_place_vel_theta_ = blp.getRenamed("min_in_place_vel_theta", "min_in_place_rotational_vel", 0.4);
+  tolerance_ = blp.get("yaw_goal_tolerance", 0.10);
+  for (const std::string& problem : blp.problemList()) ROS_ERROR("%s; using the default.", problem.c_str());
 }
 
 void RotateRecovery::run() {
@@ -92,8 +100,8 @@ void RotateRecovery::run() {
   cmd_vel_.publish(geometry_msgs::Twist());
 }
 
-std::vector<std::unique_ptr<RecoveryBehavior>> loadRecoveries(CostmapROS& global, CostmapROS& local,
-                                                              ros::Publisher& cmd_vel) {
+std::vector<std::unique_ptr<RecoveryBehavior>> loadRecoveries(ros_params::Reader& params, CostmapROS& global,
+                                                              CostmapROS& local, ros::Publisher& cmd_vel) {
   ros::NodeHandle nh("~");
   std::vector<std::unique_ptr<RecoveryBehavior>> behaviours;
   const auto add = [&](const std::string& name, const std::string& type) {
@@ -110,8 +118,10 @@ std::vector<std::unique_ptr<RecoveryBehavior>> loadRecoveries(CostmapROS& global
     b->type = type;
     behaviours.push_back(std::move(b));
   };
+  const bool rotate = params.get("clearing_rotation_allowed", true);
+  const double conservative_reset_dist = params.get("conservative_reset_dist", 3.0);
   XmlRpc::XmlRpcValue list;
-  if (nh.getParam("recovery_behaviors", list)) {
+  if (params.read("recovery_behaviors", &list)) {
     if (list.getType() == XmlRpc::XmlRpcValue::TypeArray) {
       for (int i = 0; i < list.size(); ++i) {
         if (list[i].getType() == XmlRpc::XmlRpcValue::TypeStruct && list[i].hasMember("name") && list[i].hasMember("type"))
@@ -124,8 +134,7 @@ std::vector<std::unique_ptr<RecoveryBehavior>> loadRecoveries(CostmapROS& global
     ROS_ERROR("recovery_behaviors: expected a list of {name: ..., type: ...}; using the default behaviours.");
   }
   // move_base's defaults, the resets' distances set as upstream sets them.
-  const bool rotate = param(nh, "clearing_rotation_allowed", true);
-  nh.setParam("conservative_reset/reset_distance", param(nh, "conservative_reset_dist", 3.0));
+  nh.setParam("conservative_reset/reset_distance", conservative_reset_dist);
   nh.setParam("aggressive_reset/reset_distance", global.circumscribedRadius() * 4);
   add("conservative_reset", "clear_costmap_recovery/ClearCostmapRecovery");
   if (rotate) add("rotate_recovery", "rotate_recovery/RotateRecovery");

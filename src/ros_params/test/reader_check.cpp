@@ -34,6 +34,10 @@ TEST(Reader, ReadsEachTypeAndKeepsTheDefaultOfWhatIsNotSet) {
   EXPECT_EQ(joints, (std::vector<std::string>{"joint1", "joint2"}));
   EXPECT_FALSE(params.read("absent", &absent));
   EXPECT_DOUBLE_EQ(absent, 1.5);
+  EXPECT_DOUBLE_EQ(params.get("period", 9.0), 0.25);
+  EXPECT_DOUBLE_EQ(params.get("absent", 9.0), 9.0);
+  EXPECT_EQ(params.get<std::string>("frame", "odom"), "/map");
+  EXPECT_DOUBLE_EQ(params.getRenamed("absent", "period", 9.0), 0.25);
   EXPECT_TRUE(params.ok()) << params.problems();
 }
 
@@ -50,6 +54,7 @@ TEST(Reader, AWrongTypeIsAProblemNamingThePathAndKeepsTheDefault) {
   EXPECT_FALSE(params.read("wrong_bool", &wrong_bool));
   EXPECT_FALSE(params.read("frame", &frame_as_number));
   EXPECT_FALSE(params.read("bad_gains", &bad_gains));
+  EXPECT_EQ(params.get("wrong_bool", true), true);  // the fallback, and the problem again
   EXPECT_DOUBLE_EQ(nan_value, 1.0);
   EXPECT_EQ(half, 3);
   EXPECT_FALSE(wrong_bool);
@@ -62,6 +67,7 @@ TEST(Reader, AWrongTypeIsAProblemNamingThePathAndKeepsTheDefault) {
                                       ns + "/wrong_bool: expected true or false, got the string 'yes'",
                                       ns + "/frame: expected a number, got the string '/map'",
                                       ns + "/bad_gains: expected a list of numbers, got the string 'two' at [1]",
+                                      ns + "/wrong_bool: expected true or false, got the string 'yes'",
                                   }));
 }
 

@@ -28,8 +28,6 @@ class GlobalPlannerROS {
                 std::vector<geometry_msgs::PoseStamped>& plan, std::string* why);
 
   const std::string& name() const { return name_; }
-  // Its parameter names (for the misspelling check).
-  static const std::set<std::string>& knownParams();
 
  private:
   bool onMakePlan(nav_msgs::GetPlan::Request& request, nav_msgs::GetPlan::Response& response);

@@ -33,7 +33,6 @@ class LocalPlannerROS {
   bool isGoalReached() const { return reached_; }
 
   const std::string& name() const { return name_; }
-  static const std::set<std::string>& knownParams(const std::string& name);
 
  private:
   void onOdometry(const nav_msgs::OdometryConstPtr& odom);

@@ -11,6 +11,7 @@
 #include <condition_variable>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <thread>
 #include <vector>
 
@@ -47,7 +48,8 @@ class MoveBase {
   bool onClearCostmaps(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
   void publishZeroVelocity();
   void resetState();
-  void warnUnknownParams() const;
+  // What the private namespace may hold besides move_base's own parameters.
+  std::set<std::string> namespacesAndOthers() const;
 
   tf2_ros::Buffer& tf_;
   ros::NodeHandle private_nh_;

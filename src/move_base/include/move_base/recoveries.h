@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "move_base/costmap_ros.h"
+#include "ros_params/reader.h"
 
 namespace move_base {
 
@@ -45,7 +46,8 @@ class RotateRecovery : public RecoveryBehavior {
 
 // The behaviours of ~recovery_behaviors, or move_base's defaults (conservative_reset, rotate,
 // aggressive_reset, rotate; the rotations only with clearing_rotation_allowed).
-std::vector<std::unique_ptr<RecoveryBehavior>> loadRecoveries(CostmapROS& global, CostmapROS& local,
+std::vector<std::unique_ptr<RecoveryBehavior>> loadRecoveries(ros_params::Reader& params, CostmapROS& global,
+                                                              CostmapROS& local,
                                                               ros::Publisher& cmd_vel);
 
 }  // namespace move_base

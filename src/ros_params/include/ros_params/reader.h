@@ -2,6 +2,7 @@
 // Reading a node's ROS parameters, one way for every C++ node of the workspace:
 //   ros_params::Reader params(ros::NodeHandle("~"));
 //   params.read("map_resolution", &options.resolution);      // set: read; absent: default kept
+//   options.rate = params.get("rate", 20.0);                   // the same, returning the value
 //   params.readRenamed("max_vel_trans", "max_trans_vel", &v);  // the old name honoured, with a warning
 //   params.require("joint", &joint, "the name of a joint");    // absent is a problem too
 //   if (!params.ok()) ROS_FATAL("%s", params.problems().c_str());
@@ -37,6 +38,14 @@ class Reader {
   bool read(const std::string& name, std::vector<std::string>* value);
   bool read(const std::string& name, XmlRpc::XmlRpcValue* value);  // any type: checked by the caller
 
+  // The value of `name`, else `fallback` (not set, or of the wrong type: a problem).
+  template <class T>
+  T get(const std::string& name, const T& fallback) {
+    T value = fallback;
+    read(name, &value);
+    return value;
+  }
+
   // `name`, else its former name `old_name` (with a warning naming the new one).
   template <class T>
   bool readRenamed(const std::string& name, const std::string& old_name, T* value) {
@@ -44,6 +53,13 @@ class Reader {
     if (!read(old_name, value)) return false;
     warn(path(old_name) + " has been renamed to " + name + ": its value is used (rename it)");
     return true;
+  }
+
+  template <class T>
+  T getRenamed(const std::string& name, const std::string& old_name, const T& fallback) {
+    T value = fallback;
+    readRenamed(name, old_name, &value);
+    return value;
   }
 
   // Like read, and a problem when the parameter is not set: "<path>: required parameter missing; expected <what>".
