@@ -8,6 +8,7 @@ import os
 import subprocess
 import sys
 import tempfile
+import time
 
 import yaml
 
@@ -19,7 +20,7 @@ VENV_PYTHON = os.path.join(ROOT, '.venv', 'bin', 'python3')  # Ray is installed 
 def add_arguments(parser):
     """The batch options every benchmark takes."""
     parser.add_argument('--out', help='results file (JSON lines; default: a new one in /tmp); an existing one is '
-                                      'gone on from: the runs it has are not run again')
+                                      'resumed: the runs it has are not run again')
     parser.add_argument('--address', help='a Ray cluster to run on (default: RAY_ADDRESS, else this machine)')
     parser.add_argument('--cpus-per-run', type=float,
                         help='CPUs each run reserves (default: the benchmark\'s, which runs one at a time on 2 cores)')
@@ -53,6 +54,16 @@ def run(scenario, args, default_cpus, name):
     records = {record['run_id']: record for record in read_results(out)[0]}  # a run again: its last record
     return [records.get(run_id, {'run_id': run_id, 'state': 'missing', 'error': 'not in %s' % out})
             for run_id in order], out
+
+
+def wait_until(predicate, timeout, what):
+    """In a check: waits for predicate(); ends the check (a failed run, saying what was missing)
+    after `timeout` wall seconds."""
+    deadline = time.monotonic() + timeout
+    while not predicate():
+        if time.monotonic() > deadline:
+            sys.exit('%s: no %s in %.0f s' % (os.path.basename(sys.argv[0]), what, timeout))
+        time.sleep(0.1)
 
 
 def result_of(record):

@@ -91,11 +91,7 @@ def check(name, explorer, start, rtf, mapper):
     rospy.wait_for_service('/gazebo/set_physics_properties', timeout=90)
     watch = Watch(area, walls, map_in_world, '/%s/status' % explorer, robot['model'], robot['outline'],
                   robot['laser_range'])
-    deadline = time.monotonic() + 120
-    while not watch.status.startswith('exploring'):
-        if time.monotonic() > deadline:
-            sys.exit('bench_exploration: no first exploration goal in 120 s (status: %r)' % watch.status)
-        time.sleep(0.1)
+    bench_batch.wait_until(lambda: watch.status.startswith('exploring'), 120, 'first exploration goal')
     set_real_time_factor(rtf)
     sim0, wall0 = rospy.get_time(), time.monotonic()
     wall_at_95 = None

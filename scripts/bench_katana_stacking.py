@@ -44,14 +44,6 @@ def tilt(q):
     return math.degrees(2 * math.asin(min(1.0, math.hypot(q.x, q.y))))
 
 
-def wait_until(predicate, timeout, what):
-    deadline = time.monotonic() + timeout
-    while not predicate():
-        if time.monotonic() > deadline:
-            sys.exit('bench_katana_stacking: no %s in %.0f s' % (what, timeout))
-        time.sleep(0.1)
-
-
 def check(seed):
     """One run's check: stack_cans.launch is up on this run's master (ROS_MASTER_URI); prints one
     JSON line with what happened."""
@@ -80,12 +72,12 @@ def check(seed):
     rospy.Subscriber('/gazebo/grasp_events', GazeboGraspEvent, lambda e: events.append((e.object, e.attached)))
     detected = []
     rospy.Subscriber('/stack_cans/cans', PoseArray, lambda m: detected.append(m))
-    wait_until(lambda: bool(detected), 90, 'cans published by stack_cans')
+    bench_batch.wait_until(lambda: bool(detected), 90, 'cans published by stack_cans')
     world = rospy.ServiceProxy('/gazebo/get_world_properties', GetWorldProperties)
     get_state = rospy.ServiceProxy('/gazebo/get_model_state', GetModelState)
     set_real_time_factor(0.0)
     sim0, wall0 = world().sim_time, time.monotonic()
-    wait_until(lambda: '/stack_cans' not in rosnode.get_node_names(), 600, 'end of stack_cans')
+    bench_batch.wait_until(lambda: '/stack_cans' not in rosnode.get_node_names(), 600, 'end of stack_cans')
     sim_s, wall_s = world().sim_time - sim0, time.monotonic() - wall0
 
     def poses():

@@ -165,14 +165,6 @@ class Truth:
                 self.contacts += 1
 
 
-def wait_until(predicate, timeout, what):
-    deadline = time.monotonic() + timeout
-    while not predicate():
-        if time.monotonic() > deadline:
-            sys.exit('bench_navigation: no %s in %.0f s' % (what, timeout))
-        time.sleep(0.1)
-
-
 def check(name, goals, seed, rtf, trace_file=None, cpu=False, mapper='hector'):
     """One run's check: the robot's navigation launch is up on this run's master (ROS_MASTER_URI);
     drives to `goals` goals drawn from `seed`, one after the other, and prints one JSON line."""
@@ -196,11 +188,11 @@ def check(name, goals, seed, rtf, trace_file=None, cpu=False, mapper='hector'):
     rospy.init_node('bench_navigation', anonymous=True, disable_signals=True)  # the launch set /use_sim_time
     rospy.wait_for_service('/gazebo/set_physics_properties', timeout=90)
     client = actionlib.SimpleActionClient('move_base', MoveBaseAction)
-    wait_until(lambda: client.wait_for_server(rospy.Duration(1.0)), 120, 'move_base')
+    bench_batch.wait_until(lambda: client.wait_for_server(rospy.Duration(1.0)), 120, 'move_base')
     truth = Truth(robot['model'], walls, robot['outline'])
     if trace_file:
         truth.follow_mapper(map_in_world)
-    wait_until(lambda: truth.pose is not None, 30, '/gazebo/model_states')
+    bench_batch.wait_until(lambda: truth.pose is not None, 30, '/gazebo/model_states')
     if rtf != 1.0:
         set_real_time_factor(rtf)
 
