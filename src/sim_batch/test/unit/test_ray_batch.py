@@ -86,6 +86,13 @@ scenarios:
     assert done.returncode == 1
 
 
+def ctrl_c_as_in_a_terminal():
+    """SIGINT's default action and unblocked, as a shell gives its foreground command, whatever
+    the test run inherited (started in the background, `cmd &` in a script, it ignores SIGINT)."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
+
+
 def test_ctrl_c_stops_the_batch_leaves_no_process_and_keeps_what_finished(tmp_path):
     marker = "sleep 300.31"  # the long runs' processes, for pgrep
     batch = tmp_path / "batch.yaml"
@@ -101,15 +108,14 @@ scenarios:
     raylets_before = pids("raylet")  # the tests' shared cluster's
     # as a terminal runs it: its own process group, which Ctrl-C signals whole
     batch_run = subprocess.Popen([RUN, str(batch), "--out", str(out)], stdout=subprocess.PIPE,
-                                 stderr=subprocess.PIPE, text=True, start_new_session=True)
+                                 stderr=subprocess.PIPE, text=True, start_new_session=True,
+                                 preexec_fn=ctrl_c_as_in_a_terminal)
     deadline = time.monotonic() + 120
     while not (out.exists() and "quick" in out.read_text() and alive(marker)) and time.monotonic() < deadline:
         time.sleep(0.2)
     assert alive(marker), "the long runs did not start"
     os.killpg(batch_run.pid, signal.SIGINT)
-    # ray_batch's CANCEL_WAIT_S (40 s) for the runs to stop, then Ray's shut-down: 70 s was once not
-    # enough on a CI machine also building the workspace
-    _, stderr = batch_run.communicate(timeout=120)
+    _, stderr = batch_run.communicate(timeout=60)
     assert batch_run.returncode == 130, stderr
     assert "keeps every finished run" in stderr
     deadline = time.monotonic() + 30

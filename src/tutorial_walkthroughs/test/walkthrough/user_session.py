@@ -53,6 +53,12 @@ class Terminal:
         def own_terminal():  # a session whose controlling terminal is this one
             os.setsid()
             fcntl.ioctl(0, termios.TIOCSCTTY, 0)
+            # Ctrl+C and Ctrl+\ as a terminal's shell has them, whatever this process inherited: a
+            # test run started in the background (`cmd &` in a script) ignores SIGINT, and a shell
+            # started with it ignored cannot trap it (run_pioneer_gazebo's trap never ran).
+            for sig in (signal.SIGINT, signal.SIGQUIT):
+                signal.signal(sig, signal.SIG_DFL)
+            signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT, signal.SIGQUIT})
 
         self.process = subprocess.Popen(['bash', '-c', script], env=env, cwd=cwd, stdin=slave, stdout=slave,
                                         stderr=slave, preexec_fn=own_terminal, close_fds=True)
