@@ -12,43 +12,62 @@
 
 #include "joint_state_publisher/joint_list.h"
 #include "publish_thread/no_delay.h"
+#include "ros_params/reader.h"
 
 namespace joint_state_publisher {
 namespace {
 
-template <typename T>
-bool getParam(const std::string& name, T& value) {
-  return ros::param::get("~" + name, value) || ros::param::get(name, value);
-}
+// Upstream's get_param: the private name, else the one in the node's namespace. A value of the
+// wrong type is a problem of the reader it came from (the node then stops and says which).
+class Params {
+ public:
+  Params() : private_(ros::NodeHandle("~")), public_(ros::NodeHandle()) {}
 
-template <typename T>
-T param(const std::string& name, T fallback) {
-  T value;
-  return getParam(name, value) ? value : fallback;
-}
+  template <typename T>
+  bool read(const std::string& name, T* value, const std::string& expected) {
+    return private_.has(name) ? private_.read(name, value, expected) : public_.read(name, value, expected);
+  }
+  bool read(const std::string& name, XmlRpc::XmlRpcValue* value) {
+    return private_.read(name, value) || public_.read(name, value);
+  }
+  template <typename T>
+  T get(const std::string& name, T fallback, const std::string& expected) {
+    read(name, &fallback, expected);
+    return fallback;
+  }
+  // The problems of both, one a line; "" when there are none.
+  std::string problems() const {
+    const std::string mine = private_.problems(), theirs = public_.problems();
+    return mine + (mine.empty() || theirs.empty() ? "" : "\n") + theirs;
+  }
+
+ private:
+  ros_params::Reader private_, public_;
+};
 
 double number(const XmlRpc::XmlRpcValue& v, const std::string& what) {
   if (v.getType() == XmlRpc::XmlRpcValue::TypeDouble) return static_cast<double>(v);
   if (v.getType() == XmlRpc::XmlRpcValue::TypeInt) return static_cast<int>(v);
-  throw JointListError(what + ": expected a number");
+  throw JointListError(what + ": expected a number, got " + ros_params::describe(v));
 }
 
 // zeros: {joint: position}; dependent_joints: {joint: {parent: joint, factor: f, offset: o}}.
-Options readOptions() {
+Options readOptions(Params& params) {
   Options o;
-  o.use_mimic_tags = param("use_mimic_tags", true);
-  o.use_smallest_joint_limits = param("use_smallest_joint_limits", true);
-  o.publish_default_positions = param("publish_default_positions", true);
-  o.publish_default_velocities = param("publish_default_velocities", false);
-  o.publish_default_efforts = param("publish_default_efforts", false);
+  const std::string flag = "true or false";
+  o.use_mimic_tags = params.get("use_mimic_tags", true, flag);
+  o.use_smallest_joint_limits = params.get("use_smallest_joint_limits", true, flag);
+  o.publish_default_positions = params.get("publish_default_positions", true, flag);
+  o.publish_default_velocities = params.get("publish_default_velocities", false, flag);
+  o.publish_default_efforts = params.get("publish_default_efforts", false, flag);
   XmlRpc::XmlRpcValue zeros;
-  if (getParam("zeros", zeros)) {
+  if (params.read("zeros", &zeros)) {
     if (zeros.getType() != XmlRpc::XmlRpcValue::TypeStruct)
-      throw JointListError("parameter zeros: expected a dictionary {joint: position}");
+      throw JointListError("parameter zeros: expected a dictionary {joint: position}, got " + ros_params::describe(zeros));
     for (auto& [joint, value] : zeros) o.zeros[joint] = number(value, "parameter zeros/" + joint);
   }
   XmlRpc::XmlRpcValue dependents;
-  if (getParam("dependent_joints", dependents)) {
+  if (params.read("dependent_joints", &dependents)) {
     if (dependents.getType() != XmlRpc::XmlRpcValue::TypeStruct)
       throw JointListError("parameter dependent_joints: expected a dictionary {joint: {parent: ..., factor: ..., offset: ...}}");
     for (auto& [joint, entry] : dependents) {
@@ -68,11 +87,11 @@ Options readOptions() {
 
 class Publisher {
  public:
-  Publisher(std::unique_ptr<JointList> joints, double rate, double delta)
+  Publisher(std::unique_ptr<JointList> joints, double rate, double delta, const std::vector<std::string>& source_list)
       : joints_(std::move(joints)), delta_(delta) {
     ros::NodeHandle nh;
     publisher_ = nh.advertise<sensor_msgs::JointState>("joint_states", 5);
-    for (const std::string& source : param("source_list", std::vector<std::string>()))
+    for (const std::string& source : source_list)
       sources_.push_back(nh.subscribe(source, 10, &Publisher::onSource, this));
     timer_ = nh.createTimer(ros::Duration(1.0 / rate), &Publisher::publish, this);
   }
@@ -116,18 +135,24 @@ int main(int argc, char** argv) {
   ros::init(argc, argv, "joint_state_publisher");
   ros::NodeHandle nh;
   publish_thread::sendWithoutDelay();  // subscribers get each message at once, even faster than real time
+  Params params;
   std::string description;
-  if (!getParam("robot_description", description)) {
-    ROS_FATAL("The robot_description parameter is required and not set.");
+  if (!params.read("robot_description", &description, "the robot's URDF")) {
+    const std::string problems = params.problems();
+    ROS_FATAL("%s", problems.empty() ? "The robot_description parameter is required and not set." : problems.c_str());
     return 1;
   }
   std::unique_ptr<Publisher> publisher;
   try {
-    auto joints = std::make_unique<JointList>(description, readOptions());
-    for (const std::string& w : joints->warnings()) ROS_WARN("%s", w.c_str());
-    const double rate = param("rate", 10.0);
+    Options options = readOptions(params);
+    const double rate = params.get("rate", 10.0, "a rate > 0 Hz");
+    const double delta = params.get("delta", 0.0, "a number (radians a joint moves per update)");
+    const auto source_list = params.get("source_list", std::vector<std::string>(), "a list of JointState topics");
+    if (!params.problems().empty()) throw JointListError(params.problems());
     if (!(rate > 0)) throw JointListError("parameter rate: expected a rate > 0 Hz, got " + std::to_string(rate));
-    publisher = std::make_unique<Publisher>(std::move(joints), rate, param("delta", 0.0));
+    auto joints = std::make_unique<JointList>(description, options);
+    for (const std::string& w : joints->warnings()) ROS_WARN("%s", w.c_str());
+    publisher = std::make_unique<Publisher>(std::move(joints), rate, delta, source_list);
   } catch (const JointListError& e) {
     ROS_FATAL("joint_state_publisher: %s", e.what());
     return 1;

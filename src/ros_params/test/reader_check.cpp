@@ -54,7 +54,7 @@ TEST(Reader, AWrongTypeIsAProblemNamingThePathAndKeepsTheDefault) {
   EXPECT_FALSE(params.read("wrong_bool", &wrong_bool));
   EXPECT_FALSE(params.read("frame", &frame_as_number));
   EXPECT_FALSE(params.read("bad_gains", &bad_gains));
-  EXPECT_EQ(params.get("wrong_bool", true), true);  // the fallback, and the problem again
+  EXPECT_EQ(params.get("wrong_bool", true), true);  // the fallback; the same problem is said once
   EXPECT_DOUBLE_EQ(nan_value, 1.0);
   EXPECT_EQ(half, 3);
   EXPECT_FALSE(wrong_bool);
@@ -67,7 +67,6 @@ TEST(Reader, AWrongTypeIsAProblemNamingThePathAndKeepsTheDefault) {
                                       ns + "/wrong_bool: expected true or false, got the string 'yes'",
                                       ns + "/frame: expected a number, got the string '/map'",
                                       ns + "/bad_gains: expected a list of numbers, got the string 'two' at [1]",
-                                      ns + "/wrong_bool: expected true or false, got the string 'yes'",
                                   }));
 }
 
@@ -77,7 +76,24 @@ TEST(Reader, ARequiredParameterMissingIsAProblem) {
   EXPECT_FALSE(params.require("joint", &joint, "the name of a joint"));
   EXPECT_EQ(joint, "kept");
   EXPECT_EQ(params.problems(),
-            privateNh().getNamespace() + "/joint: required parameter missing; expected the name of a joint\n");
+            privateNh().getNamespace() + "/joint: required parameter missing; expected the name of a joint");
+}
+
+TEST(Reader, ProblemsSayWhatTheCallerExpectedAndCheckedValues) {
+  ros_params::Reader params(privateNh());
+  const std::string ns = privateNh().getNamespace();
+  double gain = 4.0;
+  std::string joint = "kept";
+  EXPECT_FALSE(params.read("frame", &gain, "a number (the proportional gain)"));
+  EXPECT_FALSE(params.require("rate", &joint, "the name of a joint"));  // set, of the wrong type
+  EXPECT_TRUE(params.has("period"));
+  EXPECT_FALSE(params.has("absent"));
+  EXPECT_FALSE(params.fail("period", "is 0.25; expected at least 1"));
+  EXPECT_EQ(params.problems(), ns + "/frame: expected a number (the proportional gain), got the string '/map'\n" +
+                                   ns + "/rate: expected the name of a joint, got 40\n" +
+                                   ns + "/period: is 0.25; expected at least 1");
+  EXPECT_DOUBLE_EQ(gain, 4.0);
+  EXPECT_EQ(joint, "kept");
 }
 
 TEST(Reader, ARenamedParameterIsReadUnderItsOldNameWithAWarning) {

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim_control/params.h"
+#include "sim_control/controller_params.h"
 
 namespace sim_control {
 namespace {
@@ -17,31 +17,28 @@ bool Pid::init(const ros::NodeHandle& nh, std::string& error) {
   // `pid: 100` instead of `pid: {p: 100}` would otherwise be reported as a missing p.
   XmlRpc::XmlRpcValue group;
   if (ros::param::get(nh.getNamespace(), group) && group.getType() != XmlRpc::XmlRpcValue::TypeStruct) {
-    error = nh.getNamespace() + ": expected the PID gains as a dictionary, e.g. {p: 100.0, i: 0.01, d: 10.0}; got " +
-            describeValue(group);
+    error = nh.getNamespace() + ": expected the PID gains as a dictionary, e.g. {p: 100.0, i: 0.01, d: 10.0}, got " +
+            ros_params::describe(group);
     return false;
   }
+  ros_params::Reader params(nh);
   PidGains gains;
   // Like control_toolbox: only p is required; i and d default to 0.
-  if (!getNumber(nh, "p", true, "a number (the proportional gain)", gains.p, error)) {
-    if (!ros::param::has(nh.getNamespace()))
-      error += "; nothing is set under " + nh.getNamespace() + ", e.g. pid: {p: 100.0, i: 0.01, d: 10.0}";
-    return false;
-  }
-  if (!getNumber(nh, "i", false, "a number (the integral gain)", gains.i, error) ||
-      !getNumber(nh, "d", false, "a number (the derivative gain)", gains.d, error))
-    return false;
+  if (!readFinite(params, "p", &gains.p, "a number (the proportional gain)", true) && !ros::param::has(nh.getNamespace()))
+    params.problem("nothing is set under " + nh.getNamespace() + ", e.g. pid: {p: 100.0, i: 0.01, d: 10.0}");
+  readFinite(params, "i", &gains.i, "a number (the integral gain)");
+  readFinite(params, "d", &gains.d, "a number (the derivative gain)");
   // control_toolbox: i_clamp (default 0) gives the symmetric bounds; i_clamp_min / i_clamp_max
   // override one side each and are forced to <= 0 / >= 0. With the default 0 the integral
   // term is held at 0, as it is with control_toolbox (and so with ros_control in Gazebo).
   double i_clamp = 0.0;
-  if (!getNumber(nh, "i_clamp", false, "a number (the integral term's bound)", i_clamp, error)) return false;
+  readFinite(params, "i_clamp", &i_clamp, "a number (the integral term's bound)");
   gains.i_clamp_min = -std::abs(i_clamp);
   gains.i_clamp_max = std::abs(i_clamp);
-  if (!getNumber(nh, "i_clamp_min", false, "a number (the integral term's lower bound)", gains.i_clamp_min, error) ||
-      !getNumber(nh, "i_clamp_max", false, "a number (the integral term's upper bound)", gains.i_clamp_max, error) ||
-      !getOptionalBool(nh, "antiwindup", gains.antiwindup, error))
-    return false;
+  readFinite(params, "i_clamp_min", &gains.i_clamp_min, "a number (the integral term's lower bound)");
+  readFinite(params, "i_clamp_max", &gains.i_clamp_max, "a number (the integral term's upper bound)");
+  params.read("antiwindup", &gains.antiwindup);
+  if (!noProblems(params, error)) return false;
   gains.i_clamp_min = -std::abs(gains.i_clamp_min);
   gains.i_clamp_max = std::abs(gains.i_clamp_max);
   gains_ = gains;

@@ -92,6 +92,10 @@ class JointStatePublisherTest(unittest.TestCase):
         code, out = self.run_alone('_robot_description:=<robot/>', '_rate:=0')
         self.assertNotEqual(code, 0)
         self.assertIn('parameter rate: expected a rate > 0 Hz', out)
+        code, out = self.run_alone('_robot_description:=<robot/>', '_rate:=fast', '_use_mimic_tags:=3')
+        self.assertNotEqual(code, 0)  # a wrong type is an error, not the default
+        self.assertIn("/lonely/rate: expected a rate > 0 Hz, got the string 'fast'", out)
+        self.assertIn('/lonely/use_mimic_tags: expected true or false, got 3', out)
 
 
 if __name__ == '__main__':

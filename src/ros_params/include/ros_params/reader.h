@@ -11,9 +11,12 @@
 // found ("/hector_mapping/map_size: expected an integer, got the string 'big'"), and the value keeps
 // its default; never a silent fallback. Every name asked for is recorded, so unknown() reports the
 // parameters the node never reads from what it reads, not from a list kept by hand.
+// A Reader can also read a tree already fetched (ros::param::get of a namespace), the same way and
+// with the same messages, which needs no master: a test reads a yaml file's tree with it.
 #include <ros/node_handle.h>
 #include <xmlrpcpp/XmlRpcValue.h>
 
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -26,17 +29,23 @@ std::string describe(XmlRpc::XmlRpcValue value);
 
 class Reader {
  public:
-  explicit Reader(const ros::NodeHandle& nh) : nh_(nh) {}
+  explicit Reader(const ros::NodeHandle& nh) : nh_(nh), ns_(nh.getNamespace()) {}
+  // The parameters in `tree`, as fetched from namespace `ns` (an invalid tree: nothing set).
+  Reader(const XmlRpc::XmlRpcValue& tree, const std::string& ns) : tree_(tree), ns_(ns) {}
 
   // Each reads `name` (relative to the node handle) into *value when it is set and of the right
-  // type, and says whether it did.
-  bool read(const std::string& name, double* value);  // an int is a number too; NaN is refused
-  bool read(const std::string& name, int* value);     // 200.0 is taken as 200
-  bool read(const std::string& name, bool* value);
-  bool read(const std::string& name, std::string* value);
-  bool read(const std::string& name, std::vector<double>* value);
-  bool read(const std::string& name, std::vector<std::string>* value);
+  // type, and says whether it did. `expected` is what a problem says was expected ("a rate in Hz").
+  bool read(const std::string& name, double* value,  // an int is a number too; NaN is refused
+            const std::string& expected = "a number");
+  bool read(const std::string& name, int* value, const std::string& expected = "an integer");  // 200.0 is 200
+  bool read(const std::string& name, bool* value, const std::string& expected = "true or false");
+  bool read(const std::string& name, std::string* value, const std::string& expected = "a string");
+  bool read(const std::string& name, std::vector<double>* value, const std::string& expected = "a list of numbers");
+  bool read(const std::string& name, std::vector<std::string>* value,
+            const std::string& expected = "a list of strings");
   bool read(const std::string& name, XmlRpc::XmlRpcValue* value);  // any type: checked by the caller
+  // Whether `name` is set (counted as asked for).
+  bool has(const std::string& name);
 
   // The value of `name`, else `fallback` (not set, or of the wrong type: a problem).
   template <class T>
@@ -65,17 +74,23 @@ class Reader {
   // Like read, and a problem when the parameter is not set: "<path>: required parameter missing; expected <what>".
   template <class T>
   bool require(const std::string& name, T* value, const std::string& expected) {
-    if (read(name, value)) return true;
-    if (!nh_.hasParam(name)) problem(path(name) + ": required parameter missing; expected " + expected);
+    if (read(name, value, expected)) return true;
+    if (!isSet(name)) problem(path(name) + ": required parameter missing; expected " + expected);
     return false;
   }
 
-  std::string path(const std::string& name) const { return nh_.resolveName(name); }
+  // The full name of `name`, as messages give it.
+  std::string path(const std::string& name) const;
   const std::vector<std::string>& names() const { return names_; }  // every name asked for
 
-  void problem(const std::string& text) { problems_.push_back(text); }
+  void problem(const std::string& text);  // the same problem twice is recorded once
+  // A problem with `name`'s value: "<path>: <what>"; false, to return.
+  bool fail(const std::string& name, const std::string& what) {
+    problem(path(name) + ": " + what);
+    return false;
+  }
   bool ok() const { return problems_.empty(); }
-  // The problems, one a line.
+  // The problems, one a line (no newline after the last).
   std::string problems() const;
   const std::vector<std::string>& problemList() const { return problems_; }
   const std::vector<std::string>& warnings() const { return warnings_; }
@@ -88,10 +103,17 @@ class Reader {
 
  private:
   bool fetch(const std::string& name, XmlRpc::XmlRpcValue* raw);
+  bool isSet(const std::string& name) const;
+  // In tree mode: the value at `name` ('/'-separated), if set; *blocked says so when a level above
+  // it is not a dictionary.
+  const XmlRpc::XmlRpcValue* find(const std::string& name, std::string* blocked) const;
+  std::vector<std::string> allNames() const;  // the full names of everything set
   bool wrongType(const std::string& name, const std::string& expected, const XmlRpc::XmlRpcValue& raw);
   void warn(const std::string& text);
 
-  ros::NodeHandle nh_;
+  std::optional<ros::NodeHandle> nh_;  // reading the parameter server; else tree_
+  XmlRpc::XmlRpcValue tree_;
+  std::string ns_;
   std::vector<std::string> names_;
   std::vector<std::string> problems_;
   std::vector<std::string> warnings_;

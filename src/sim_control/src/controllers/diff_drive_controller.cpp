@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "publish_thread/publish_thread.h"
+#include "ros_params/reader.h"
 #include "sim_control/controller.h"
 #include "sim_control/controller_registry.h"
 #include "sim_control/diff_drive_kinematics.h"
@@ -40,67 +41,34 @@ std::string str(double v) {
   return s.str();
 }
 
-// Optional parameters of controller_nh, type-checked: absent keeps the default; present with the
-// wrong type fails with "<ns>/<name>: expected ...".
-class Params {
- public:
-  Params(ros::NodeHandle& nh, std::string& error) : nh_(nh), ns_(nh.getNamespace()), error_(error) {}
-
-  std::string path(const std::string& name) const { return ns_ == "/" ? "/" + name : ns_ + "/" + name; }
-  bool has(const std::string& name) const { return nh_.hasParam(name); }
-  bool fail(const std::string& name, const std::string& what) {
-    error_ = path(name) + ": " + what;
-    return false;
-  }
-
-  bool get(const std::string& name, XmlRpc::XmlRpcValue& value) const { return nh_.getParam(name, value); }
-
-  static bool isNumber(const XmlRpc::XmlRpcValue& v) {
-    return v.getType() == XmlRpc::XmlRpcValue::TypeDouble || v.getType() == XmlRpc::XmlRpcValue::TypeInt;
-  }
-  static double toDouble(XmlRpc::XmlRpcValue& v) {
-    return v.getType() == XmlRpc::XmlRpcValue::TypeInt ? static_cast<double>(static_cast<int>(v))
-                                                       : static_cast<double>(v);
-  }
-
-  // Numbers: ints are accepted; NaN is not.
-  bool number(const std::string& name, double& value, const std::string& expected = "a number") {
-    XmlRpc::XmlRpcValue v;
-    if (!get(name, v)) return true;
-    if (!isNumber(v)) return fail(name, "expected " + expected);
-    const double d = toDouble(v);
-    if (std::isnan(d)) return fail(name, "expected " + expected + ", got NaN");
-    value = d;
-    return true;
-  }
-  bool boolean(const std::string& name, bool& value) {
-    XmlRpc::XmlRpcValue v;
-    if (!get(name, v)) return true;
-    if (v.getType() != XmlRpc::XmlRpcValue::TypeBoolean) return fail(name, "expected a boolean (true or false)");
-    value = static_cast<bool>(v);
-    return true;
-  }
-  bool integer(const std::string& name, int& value, const std::string& expected = "an integer") {
-    XmlRpc::XmlRpcValue v;
-    if (!get(name, v)) return true;
-    if (v.getType() != XmlRpc::XmlRpcValue::TypeInt) return fail(name, "expected " + expected);
-    value = static_cast<int>(v);
-    return true;
-  }
-  bool string(const std::string& name, std::string& value, const std::string& expected) {
-    XmlRpc::XmlRpcValue v;
-    if (!get(name, v)) return true;
-    if (v.getType() != XmlRpc::XmlRpcValue::TypeString || static_cast<std::string>(v).empty())
-      return fail(name, "expected " + expected);
-    value = static_cast<std::string>(v);
-    return true;
-  }
-
- private:
-  ros::NodeHandle& nh_;
-  std::string ns_;
-  std::string& error_;
-};
+// Optional parameters: absent keeps the default; a wrong type is a problem of `params`, which init
+// returns as its error. Each says whether all is well so far.
+bool number(ros_params::Reader& params, const std::string& name, double& value, const std::string& expected = "a number") {
+  params.read(name, &value, expected);
+  return params.ok();
+}
+bool boolean(ros_params::Reader& params, const std::string& name, bool& value) {
+  params.read(name, &value, "a boolean (true or false)");
+  return params.ok();
+}
+bool integer(ros_params::Reader& params, const std::string& name, int& value, const std::string& expected) {
+  params.read(name, &value, expected);
+  return params.ok();
+}
+bool nonEmptyString(ros_params::Reader& params, const std::string& name, std::string& value,
+                    const std::string& expected) {
+  std::string read;
+  if (!params.read(name, &read, expected)) return params.ok();
+  if (read.empty()) return params.fail(name, "expected " + expected + ", got an empty string");
+  value = read;
+  return true;
+}
+bool isNumber(const XmlRpc::XmlRpcValue& v) {
+  return v.getType() == XmlRpc::XmlRpcValue::TypeDouble || v.getType() == XmlRpc::XmlRpcValue::TypeInt;
+}
+double toDouble(XmlRpc::XmlRpcValue& v) {
+  return v.getType() == XmlRpc::XmlRpcValue::TypeInt ? static_cast<double>(static_cast<int>(v)) : static_cast<double>(v);
+}
 
 // The position of a joint's origin in the URDF's root link frame (movable joints in between at
 // zero), so that wheels hung from different links still give their true separation.
@@ -147,10 +115,12 @@ class DiffDriveController : public Controller {
     ros::Time stamp;
   };
 
-  bool readWheelNames(Params& params, const std::string& side, std::vector<std::string>& names);
-  bool readLimiter(Params& params, const std::string& prefix, diff_drive::SpeedLimiter& limiter);
-  bool readCovariance(Params& params, const std::string& name, double (&diagonal)[6]);
-  bool setOdomParamsFromUrdf(ros::NodeHandle& root_nh, Params& params, const std::string& left_wheel,
+  bool configure(RobotHW& hw, ros::NodeHandle& root_nh, ros::NodeHandle& controller_nh, ros_params::Reader& params,
+                 std::string& error);
+  bool readWheelNames(ros_params::Reader& params, const std::string& side, std::vector<std::string>& names);
+  bool readLimiter(ros_params::Reader& params, const std::string& prefix, diff_drive::SpeedLimiter& limiter);
+  bool readCovariance(ros_params::Reader& params, const std::string& name, double (&diagonal)[6]);
+  bool setOdomParamsFromUrdf(ros::NodeHandle& root_nh, ros_params::Reader& params, const std::string& left_wheel,
                              const std::string& right_wheel, bool lookup_separation, bool lookup_radius);
   void cmdVelCallback(const geometry_msgs::Twist& command);
   void brake();
@@ -189,7 +159,7 @@ class DiffDriveController : public Controller {
   double log_not_running_last_ = -1.0, log_publishers_last_ = -1.0, log_nonfinite_last_ = -1.0;  // for throttle()
 };
 
-bool DiffDriveController::readWheelNames(Params& params, const std::string& side, std::vector<std::string>& names) {
+bool DiffDriveController::readWheelNames(ros_params::Reader& params, const std::string& side, std::vector<std::string>& names) {
   // ros_controllers' name is "<side>_wheel"; "<side>_wheel_joint" is accepted as well.
   const std::string primary = side + "_wheel";
   const std::string alias = side + "_wheel_joint";
@@ -197,7 +167,7 @@ bool DiffDriveController::readWheelNames(Params& params, const std::string& side
 
   auto read = [&](const std::string& name, std::vector<std::string>& out) {
     XmlRpc::XmlRpcValue v;
-    params.get(name, v);
+    params.read(name, &v);
     if (v.getType() == XmlRpc::XmlRpcValue::TypeString) {
       if (static_cast<std::string>(v).empty()) return params.fail(name, "empty joint name; " + expected);
       out.push_back(static_cast<std::string>(v));
@@ -228,22 +198,22 @@ bool DiffDriveController::readWheelNames(Params& params, const std::string& side
   return true;
 }
 
-bool DiffDriveController::readLimiter(Params& params, const std::string& prefix, diff_drive::SpeedLimiter& l) {
+bool DiffDriveController::readLimiter(ros_params::Reader& params, const std::string& prefix, diff_drive::SpeedLimiter& l) {
   // As ros_controllers: each min_* defaults to -max_*.
-  if (!params.boolean(prefix + "has_velocity_limits", l.has_velocity_limits) ||
-      !params.boolean(prefix + "has_acceleration_limits", l.has_acceleration_limits) ||
-      !params.boolean(prefix + "has_jerk_limits", l.has_jerk_limits) ||
-      !params.number(prefix + "max_velocity", l.max_velocity))
+  if (!boolean(params, prefix + "has_velocity_limits", l.has_velocity_limits) ||
+      !boolean(params, prefix + "has_acceleration_limits", l.has_acceleration_limits) ||
+      !boolean(params, prefix + "has_jerk_limits", l.has_jerk_limits) ||
+      !number(params, prefix + "max_velocity", l.max_velocity))
     return false;
   l.min_velocity = -l.max_velocity;
-  if (!params.number(prefix + "min_velocity", l.min_velocity) ||
-      !params.number(prefix + "max_acceleration", l.max_acceleration))
+  if (!number(params, prefix + "min_velocity", l.min_velocity) ||
+      !number(params, prefix + "max_acceleration", l.max_acceleration))
     return false;
   l.min_acceleration = -l.max_acceleration;
-  if (!params.number(prefix + "min_acceleration", l.min_acceleration) || !params.number(prefix + "max_jerk", l.max_jerk))
+  if (!number(params, prefix + "min_acceleration", l.min_acceleration) || !number(params, prefix + "max_jerk", l.max_jerk))
     return false;
   l.min_jerk = -l.max_jerk;
-  if (!params.number(prefix + "min_jerk", l.min_jerk)) return false;
+  if (!number(params, prefix + "min_jerk", l.min_jerk)) return false;
 
   struct Range {
     bool enabled;
@@ -265,21 +235,21 @@ bool DiffDriveController::readLimiter(Params& params, const std::string& prefix,
   return true;
 }
 
-bool DiffDriveController::readCovariance(Params& params, const std::string& name, double (&diagonal)[6]) {
+bool DiffDriveController::readCovariance(ros_params::Reader& params, const std::string& name, double (&diagonal)[6]) {
   // Optional (ros_controllers asserts it is there; without it a release build used zeros).
   for (double& d : diagonal) d = 0.0;
   XmlRpc::XmlRpcValue v;
-  if (!params.get(name, v)) return true;
+  if (!params.read(name, &v)) return true;
   const std::string expected = "expected a list of 6 numbers (the covariance diagonal for x, y, z, rotation about X, Y, Z)";
   if (v.getType() != XmlRpc::XmlRpcValue::TypeArray || v.size() != 6) return params.fail(name, expected);
   for (int i = 0; i < 6; ++i) {
-    if (!Params::isNumber(v[i])) return params.fail(name, "element " + std::to_string(i) + " is not a number; " + expected);
-    diagonal[i] = Params::toDouble(v[i]);
+    if (!isNumber(v[i])) return params.fail(name, "element " + std::to_string(i) + " is not a number; " + expected);
+    diagonal[i] = toDouble(v[i]);
   }
   return true;
 }
 
-bool DiffDriveController::setOdomParamsFromUrdf(ros::NodeHandle& root_nh, Params& params, const std::string& left_wheel,
+bool DiffDriveController::setOdomParamsFromUrdf(ros::NodeHandle& root_nh, ros_params::Reader& params, const std::string& left_wheel,
                                                 const std::string& right_wheel, bool lookup_separation,
                                                 bool lookup_radius) {
   if (!lookup_separation && !lookup_radius) return true;  // nothing to derive: don't parse the URDF
@@ -325,9 +295,16 @@ bool DiffDriveController::setOdomParamsFromUrdf(ros::NodeHandle& root_nh, Params
 
 bool DiffDriveController::init(RobotHW& hw, ros::NodeHandle& root_nh, ros::NodeHandle& controller_nh,
                                std::string& error) {
+  ros_params::Reader params(controller_nh);
+  if (configure(hw, root_nh, controller_nh, params, error)) return true;
+  if (!params.ok()) error = params.problems();  // else claim() has said what went wrong
+  return false;
+}
+
+bool DiffDriveController::configure(RobotHW& hw, ros::NodeHandle& root_nh, ros::NodeHandle& controller_nh,
+                                    ros_params::Reader& params, std::string& error) {
   const std::string ns = controller_nh.getNamespace();
   name_ = ns.substr(ns.find_last_of('/') + 1);
-  Params params(controller_nh, error);
 
   // Wheel joints.
   std::vector<std::string> left_names, right_names;
@@ -347,43 +324,43 @@ bool DiffDriveController::init(RobotHW& hw, ros::NodeHandle& root_nh, ros::NodeH
 
   // Odometry and command parameters.
   double publish_rate = 50.0;
-  if (!params.number("publish_rate", publish_rate, "a positive number (Hz)")) return false;
+  if (!number(params, "publish_rate", publish_rate, "a positive number (Hz)")) return false;
   if (!(publish_rate > 0.0) || std::isinf(publish_rate) || 1.0 / publish_rate > 1e9)
     return params.fail("publish_rate", "is " + str(publish_rate) + "; expected a positive number (Hz)");
   publish_period_ = ros::Duration(1.0 / publish_rate);
 
-  if (!params.boolean("open_loop", open_loop_)) return false;
+  if (!boolean(params, "open_loop", open_loop_)) return false;
 
   for (const char* name : {"wheel_separation_multiplier", "wheel_radius_multiplier", "left_wheel_radius_multiplier",
                            "right_wheel_radius_multiplier"}) {
     double m = 1.0;
-    if (!params.number(name, m, "a non-zero number")) return false;
+    if (!number(params, name, m, "a non-zero number")) return false;
     if (m == 0.0 || std::isinf(m)) return params.fail(name, "is " + str(m) + "; expected a non-zero number");
   }
-  params.number("wheel_separation_multiplier", wheel_separation_multiplier_);
+  number(params, "wheel_separation_multiplier", wheel_separation_multiplier_);
   if (params.has("wheel_radius_multiplier")) {  // overrides the per-side ones, as ros_controllers
     double m = 1.0;
-    params.number("wheel_radius_multiplier", m);
+    number(params, "wheel_radius_multiplier", m);
     left_wheel_radius_multiplier_ = right_wheel_radius_multiplier_ = m;
   } else {
-    params.number("left_wheel_radius_multiplier", left_wheel_radius_multiplier_);
-    params.number("right_wheel_radius_multiplier", right_wheel_radius_multiplier_);
+    number(params, "left_wheel_radius_multiplier", left_wheel_radius_multiplier_);
+    number(params, "right_wheel_radius_multiplier", right_wheel_radius_multiplier_);
   }
 
   int window = 10;
-  if (!params.integer("velocity_rolling_window_size", window, "a positive integer")) return false;
+  if (!integer(params, "velocity_rolling_window_size", window, "a positive integer")) return false;
   if (window < 1)
     return params.fail("velocity_rolling_window_size", "is " + std::to_string(window) + "; expected a positive integer");
   odometry_.setVelocityRollingWindowSize(static_cast<std::size_t>(window));
 
-  if (!params.number("cmd_vel_timeout", cmd_vel_timeout_, "a non-negative number (s)")) return false;
+  if (!number(params, "cmd_vel_timeout", cmd_vel_timeout_, "a non-negative number (s)")) return false;
   if (cmd_vel_timeout_ < 0.0)
     return params.fail("cmd_vel_timeout", "is " + str(cmd_vel_timeout_) + "; expected a non-negative number (s)");
 
-  if (!params.boolean("allow_multiple_cmd_vel_publishers", allow_multiple_cmd_vel_publishers_) ||
-      !params.string("base_frame_id", base_frame_id_, "a frame name") ||
-      !params.string("odom_frame_id", odom_frame_id_, "a frame name") ||
-      !params.boolean("enable_odom_tf", enable_odom_tf_) || !params.boolean("publish_cmd", publish_cmd_))
+  if (!boolean(params, "allow_multiple_cmd_vel_publishers", allow_multiple_cmd_vel_publishers_) ||
+      !nonEmptyString(params, "base_frame_id", base_frame_id_, "a frame name") ||
+      !nonEmptyString(params, "odom_frame_id", odom_frame_id_, "a frame name") ||
+      !boolean(params, "enable_odom_tf", enable_odom_tf_) || !boolean(params, "publish_cmd", publish_cmd_))
     return false;
 
   if (!readLimiter(params, "linear/x/", limiter_lin_) || !readLimiter(params, "angular/z/", limiter_ang_)) return false;
@@ -397,12 +374,12 @@ bool DiffDriveController::init(RobotHW& hw, ros::NodeHandle& root_nh, ros::NodeH
   const bool lookup_separation = !params.has("wheel_separation");
   const bool lookup_radius = !params.has("wheel_radius");
   if (!lookup_separation) {
-    if (!params.number("wheel_separation", wheel_separation_, "a positive number (m)")) return false;
+    if (!number(params, "wheel_separation", wheel_separation_, "a positive number (m)")) return false;
     if (!(wheel_separation_ > 0.0) || std::isinf(wheel_separation_))
       return params.fail("wheel_separation", "is " + str(wheel_separation_) + "; expected a positive number (m)");
   }
   if (!lookup_radius) {
-    if (!params.number("wheel_radius", wheel_radius_, "a positive number (m)")) return false;
+    if (!number(params, "wheel_radius", wheel_radius_, "a positive number (m)")) return false;
     if (!(wheel_radius_ > 0.0) || std::isinf(wheel_radius_))
       return params.fail("wheel_radius", "is " + str(wheel_radius_) + "; expected a positive number (m)");
   }

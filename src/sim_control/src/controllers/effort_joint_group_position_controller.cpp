@@ -5,7 +5,7 @@
 
 #include "controller_util.h"
 #include "sim_control/controller_registry.h"
-#include "sim_control/params.h"
+#include "sim_control/controller_params.h"
 
 namespace sim_control {
 namespace {
@@ -17,7 +17,8 @@ using controllers::positionError;
 class JointGroupPositionController : public Controller {
  public:
   bool init(RobotHW& hw, ros::NodeHandle& /*root_nh*/, ros::NodeHandle& controller_nh, std::string& error) override {
-    if (!getJointNames(controller_nh, "joints", names_, error)) return false;
+    ros_params::Reader params(controller_nh);
+    if (!readJointNames(params, &names_)) return noProblems(params, error);
     pids_.resize(names_.size());
     for (std::size_t k = 0; k < names_.size(); ++k) {
       JointData* joint = claim(hw, names_[k], InterfaceType::Effort, error);

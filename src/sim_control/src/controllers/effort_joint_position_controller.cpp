@@ -5,7 +5,7 @@
 
 #include "controller_util.h"
 #include "sim_control/controller_registry.h"
-#include "sim_control/params.h"
+#include "sim_control/controller_params.h"
 
 namespace sim_control {
 namespace {
@@ -17,8 +17,9 @@ using controllers::positionError;
 class JointPositionController : public Controller {
  public:
   bool init(RobotHW& hw, ros::NodeHandle& /*root_nh*/, ros::NodeHandle& controller_nh, std::string& error) override {
+    ros_params::Reader params(controller_nh);
     std::string name;
-    if (!getRequiredString(controller_nh, "joint", "the name of a joint", name, error)) return false;
+    if (!readJointName(params, &name)) return noProblems(params, error);
     joint_ = claim(hw, name, InterfaceType::Effort, error);
     if (!joint_ || !pid_.init(ros::NodeHandle(controller_nh, "pid"), error)) return false;
     state_.init(controller_nh);

@@ -10,7 +10,7 @@
 
 #include "controller_util.h"
 #include "sim_control/controller.h"
-#include "sim_control/params.h"
+#include "sim_control/controller_params.h"
 
 namespace sim_control {
 namespace controllers {
@@ -25,8 +25,9 @@ template <InterfaceType Interface>
 class ForwardCommandController : public Controller {
  public:
   bool init(RobotHW& hw, ros::NodeHandle& /*root_nh*/, ros::NodeHandle& controller_nh, std::string& error) override {
+    ros_params::Reader params(controller_nh);
     std::string name;
-    if (!getRequiredString(controller_nh, "joint", "the name of a joint", name, error)) return false;
+    if (!readJointName(params, &name)) return noProblems(params, error);
     joint_ = claim(hw, name, Interface, error);
     if (!joint_) return false;
     sub_ = controller_nh.subscribe("command", 1, &ForwardCommandController::commandCallback, this);
@@ -47,7 +48,8 @@ template <InterfaceType Interface>
 class ForwardJointGroupCommandController : public Controller {
  public:
   bool init(RobotHW& hw, ros::NodeHandle& /*root_nh*/, ros::NodeHandle& controller_nh, std::string& error) override {
-    if (!getJointNames(controller_nh, "joints", names_, error)) return false;
+    ros_params::Reader params(controller_nh);
+    if (!readJointNames(params, &names_)) return noProblems(params, error);
     for (const auto& name : names_) {
       JointData* joint = claim(hw, name, Interface, error);
       if (!joint) return false;

@@ -8,7 +8,7 @@
 
 #include "publish_thread/publish_thread.h"
 #include "sim_control/controller_registry.h"
-#include "sim_control/params.h"
+#include "sim_control/controller_params.h"
 
 namespace sim_control {
 namespace {
@@ -17,19 +17,19 @@ class JointStateController : public Controller {
  public:
   bool init(RobotHW& hw, ros::NodeHandle& root_nh, ros::NodeHandle& controller_nh, std::string& error) override {
     const std::string expected = "a rate in Hz, e.g. 50";
+    ros_params::Reader params(controller_nh);
     double rate = 0.0;
-    if (!getNumber(controller_nh, "publish_rate", true, expected, rate, error)) return false;
-    if (rate <= 0.0) {
+    if (readFinite(params, "publish_rate", &rate, expected, true) && rate <= 0.0) {
       std::ostringstream got;
       got << rate;
-      error = badParamError(controller_nh, "publish_rate", expected + " (greater than 0)", got.str());
-      return false;
+      params.fail("publish_rate", "expected " + expected + " (greater than 0), got " + got.str());
     }
+    if (!noProblems(params, error)) return false;
     period_ = ros::Duration(1.0 / rate);
     // ros_controllers can add joints the hardware lacks, with fixed values; nothing here needs
     // that yet, so say so rather than silently dropping them.
-    if (controller_nh.hasParam("extra_joints"))
-      ROS_WARN_STREAM(paramPath(controller_nh, "extra_joints") << ": not supported by sim_control; ignored");
+    if (params.has("extra_joints"))
+      ROS_WARN_STREAM(params.path("extra_joints") << ": not supported by sim_control; ignored");
     for (JointData& joint : hw.joints()) {
       joints_.push_back(&joint);
       msg_.name.push_back(joint.name);

@@ -10,7 +10,7 @@
 
 #include "controller_util.h"
 #include "sim_control/controller_registry.h"
-#include "sim_control/params.h"
+#include "sim_control/controller_params.h"
 
 namespace sim_control {
 namespace {
@@ -68,7 +68,8 @@ bool JointTrajectoryController::init(RobotHW& hw, ros::NodeHandle& /*root_nh*/, 
   ns_ = nh.getNamespace();
 
   // Joints, through the interface this type writes.
-  if (!getJointNames(nh, "joints", joint_names_, error)) return false;
+  ros_params::Reader params(nh);
+  if (!readJointNames(params, &joint_names_)) return noProblems(params, error);
   const std::size_t n = joint_names_.size();
   for (const auto& name : joint_names_) {
     JointData* joint = claim(hw, name, interface_, error);
@@ -84,68 +85,52 @@ bool JointTrajectoryController::init(RobotHW& hw, ros::NodeHandle& /*root_nh*/, 
   if (interface_ != InterfaceType::Position) {
     for (std::size_t i = 0; i < n; ++i) {
       const std::string gains = "gains/" + joint_names_[i];
-      if (nh.hasParam(gains)) {
+      if (params.has(gains)) {
         if (!pids_[i].init(ros::NodeHandle(nh, gains), error)) return false;
         has_pid_[i] = true;
       } else if (interface_ == InterfaceType::Effort) {
-        error = missingParamError(nh, gains, "the joint's PID gains, e.g. {p: 100, i: 0.01, d: 10, i_clamp: 1}");
-        return false;
+        params.problem(params.path(gains) + ": required parameter missing; expected the joint's PID gains, "
+                       "e.g. {p: 100, i: 0.01, d: 10, i_clamp: 1}");
       } else {
-        ROS_WARN_STREAM(ns_ << ": no " << paramPath(nh, gains) << "; joint '" << joint_names_[i]
+        ROS_WARN_STREAM(ns_ << ": no " << params.path(gains) << "; joint '" << joint_names_[i]
                             << "' gets the desired velocity alone (open loop), so its position may drift");
       }
       // ros_controllers' default is 0 (PID only); a velocity joint without gains has nothing but
       // the feed-forward, so there it defaults to 1.
-      double ff = has_pid_[i] ? 0.0 : 1.0;
-      if (!getNumber(nh, "velocity_ff/" + joint_names_[i], false, "a number (the velocity feed-forward gain)", ff,
-                     error))
-        return false;
-      velocity_ff_[i] = ff;
+      velocity_ff_[i] = has_pid_[i] ? 0.0 : 1.0;
+      readFinite(params, "velocity_ff/" + joint_names_[i], &velocity_ff_[i], "a number (the velocity feed-forward gain)");
     }
   }
 
   // Rates and durations.
   double state_publish_rate = 50.0, action_monitor_rate = 20.0;
-  if (!getNumber(nh, "state_publish_rate", false, "a rate in Hz (0: do not publish)", state_publish_rate, error))
-    return false;
-  if (state_publish_rate < 0.0) {
-    error = badParamError(nh, "state_publish_rate", "a rate in Hz >= 0 (0: do not publish)",
-                          std::to_string(state_publish_rate));
-    return false;
-  }
-  state_publish_period_ = state_publish_rate > 0.0 ? 1.0 / state_publish_rate : 0.0;
-  if (!getNumber(nh, "action_monitor_rate", false, "a rate in Hz", action_monitor_rate, error)) return false;
-  if (action_monitor_rate <= 0.0) {
-    error = badParamError(nh, "action_monitor_rate", "a rate in Hz > 0", std::to_string(action_monitor_rate));
-    return false;
-  }
-  action_monitor_period_ = 1.0 / action_monitor_rate;
-  if (!getNumber(nh, "stop_trajectory_duration", false, "a duration in seconds", stop_trajectory_duration_, error))
-    return false;
-  if (stop_trajectory_duration_ < 0.0) {
-    error = badParamError(nh, "stop_trajectory_duration", "a duration in seconds >= 0",
-                          std::to_string(stop_trajectory_duration_));
-    return false;
-  }
-  if (!getOptionalBool(nh, "allow_partial_joints_goal", allow_partial_joints_goal_, error)) return false;
+  if (readFinite(params, "state_publish_rate", &state_publish_rate, "a rate in Hz (0: do not publish)") &&
+      state_publish_rate < 0.0)
+    params.fail("state_publish_rate",
+                "expected a rate in Hz >= 0 (0: do not publish), got " + std::to_string(state_publish_rate));
+  if (readFinite(params, "action_monitor_rate", &action_monitor_rate, "a rate in Hz") && action_monitor_rate <= 0.0)
+    params.fail("action_monitor_rate", "expected a rate in Hz > 0, got " + std::to_string(action_monitor_rate));
+  if (readFinite(params, "stop_trajectory_duration", &stop_trajectory_duration_, "a duration in seconds") &&
+      stop_trajectory_duration_ < 0.0)
+    params.fail("stop_trajectory_duration",
+                "expected a duration in seconds >= 0, got " + std::to_string(stop_trajectory_duration_));
+  params.read("allow_partial_joints_goal", &allow_partial_joints_goal_);
 
   // Default tolerances (ros_controllers' getSegmentTolerances).
-  const ros::NodeHandle constraints(nh, "constraints");
   double stopped_velocity_tolerance = 0.01;
-  if (!getNumber(constraints, "stopped_velocity_tolerance", false, "a velocity (0: unchecked)",
-                 stopped_velocity_tolerance, error) ||
-      !getNumber(constraints, "goal_time", false, "a duration in seconds", default_tolerances_.goal_time, error))
-    return false;
+  readFinite(params, "constraints/stopped_velocity_tolerance", &stopped_velocity_tolerance, "a velocity (0: unchecked)");
+  readFinite(params, "constraints/goal_time", &default_tolerances_.goal_time, "a duration in seconds");
   default_tolerances_.path.assign(n, {});
   default_tolerances_.goal.assign(n, {});
   for (std::size_t i = 0; i < n; ++i) {
-    if (!getNumber(constraints, joint_names_[i] + "/trajectory", false, "a position tolerance (0: unchecked)",
-                   default_tolerances_.path[i].position, error) ||
-        !getNumber(constraints, joint_names_[i] + "/goal", false, "a position tolerance (0: unchecked)",
-                   default_tolerances_.goal[i].position, error))
-      return false;
+    const std::string joint = "constraints/" + joint_names_[i];
+    readFinite(params, joint + "/trajectory", &default_tolerances_.path[i].position, "a position tolerance (0: unchecked)");
+    readFinite(params, joint + "/goal", &default_tolerances_.goal[i].position, "a position tolerance (0: unchecked)");
     default_tolerances_.goal[i].velocity = stopped_velocity_tolerance;
   }
+  if (!noProblems(params, error)) return false;
+  state_publish_period_ = state_publish_rate > 0.0 ? 1.0 / state_publish_rate : 0.0;
+  action_monitor_period_ = 1.0 / action_monitor_rate;
 
   // State.
   trajectory_.assign(n, {});
