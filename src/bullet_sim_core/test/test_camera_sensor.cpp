@@ -17,6 +17,7 @@
 #include "bullet_sim_core/scene_renderer.h"
 #include "bullet_sim_core/sdf_parser.h"
 #include "bullet_sim_core/urdf_parser.h"
+#include "bullet_sim_core/testing/error_of.h"
 
 namespace bullet_sim {
 namespace {
@@ -41,14 +42,7 @@ std::string sensor(const std::string& body) {
   return "<gazebo reference='camera_link'><sensor name='cam' type='camera'>" + body + "</sensor></gazebo>";
 }
 
-std::string errorOf(const std::string& blocks) {
-  try {
-    parse(blocks);
-  } catch (const DescriptionError& e) {
-    return e.what();
-  }
-  return "";
-}
+std::string errorOf(const std::string& blocks) { return bullet_sim::errorOf([&] { parse(blocks); }); }
 
 TEST(CameraParse, DefaultsAreGazebos) {
   const auto cams = parse(sensor(""));

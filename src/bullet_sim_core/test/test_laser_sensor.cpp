@@ -17,6 +17,7 @@
 #include "bullet_sim_core/laser_sensor.h"
 #include "bullet_sim_core/sdf_parser.h"
 #include "bullet_sim_core/urdf_parser.h"
+#include "bullet_sim_core/testing/error_of.h"
 
 namespace bullet_sim {
 namespace {
@@ -47,14 +48,7 @@ std::string block(const std::string& ray, const std::string& extra = "") {
 const std::string kRange = "<range><min>0.05</min><max>10</max></range>";
 
 // The DescriptionError message of parsing `xml`, or "" when it parses.
-std::string errorOf(const std::string& xml) {
-  try {
-    parse(xml);
-  } catch (const DescriptionError& e) {
-    return e.what();
-  }
-  return "";
-}
+std::string errorOf(const std::string& xml) { return bullet_sim::errorOf([&] { parse(xml); }); }
 
 TEST(LaserParse, DefaultsAreGazebos) {
   const auto sensors = parse(block(kRange));

@@ -8,8 +8,9 @@
 
 #include "bullet_sim_core/description_error.h"
 #include "bullet_sim_core/resource_resolver.h"
+#include "bullet_sim_core/testing/error_of.h"
 
-using bullet_sim::DescriptionError;
+using bullet_sim::errorOf;
 using bullet_sim::ResourceResolver;
 
 namespace {
@@ -23,17 +24,6 @@ ResourceResolver testResolver() {
   setenv("ROS_PACKAGE_PATH", (kData + "/packages::" + kData + "/no_such_folder").c_str(), 1);
   setenv("GAZEBO_MODEL_PATH", (kData + "/models:").c_str(), 1);
   return ResourceResolver::fromEnvironment();
-}
-
-// The message of the DescriptionError that f throws ("" if none is thrown).
-template <typename F>
-std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const DescriptionError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 std::string canonical(const std::string& p) { return std::filesystem::canonical(p).string(); }

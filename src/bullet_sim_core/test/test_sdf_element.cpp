@@ -8,20 +8,10 @@
 
 #include "bullet_sim_core/description_error.h"
 #include "bullet_sim_core/sdf_element.h"
+#include "bullet_sim_core/testing/error_of.h"
 
 namespace bullet_sim {
 namespace {
-
-// The DescriptionError message of `f`, or "" when it does not throw.
-template <class F>
-std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const DescriptionError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 const char* kRobot = R"(<robot name="r">
   <gazebo reference="laser">

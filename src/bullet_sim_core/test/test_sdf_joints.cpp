@@ -11,19 +11,11 @@
 #include "bullet_sim_core/description_error.h"
 #include "bullet_sim_core/physics_world.h"
 #include "bullet_sim_core/sdf_parser.h"
+#include "bullet_sim_core/testing/error_of.h"
 
 using namespace bullet_sim;
 
 namespace {
-
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const DescriptionError& e) {
-    return e.what();
-  }
-  return "(no DescriptionError thrown)";
-}
 
 ModelDescription parse(const std::string& xml) { return parseSdfModel(xml, "vehicle.sdf", "", ResourceResolver()); }
 

@@ -11,6 +11,7 @@
 
 #include "bullet_sim_core/description_error.h"
 #include "bullet_sim_core/sdf_parser.h"
+#include "bullet_sim_core/testing/error_of.h"
 
 using namespace bullet_sim;
 
@@ -29,15 +30,6 @@ const PlacedModel& model(const WorldDescription& w, const std::string& name) {
   for (const auto& m : w.models)
     if (m.model.name == name) return m;
   throw std::runtime_error("no model " + name);
-}
-
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const DescriptionError& e) {
-    return e.what();
-  }
-  return "(no DescriptionError thrown)";
 }
 
 // Expects every part in the message.

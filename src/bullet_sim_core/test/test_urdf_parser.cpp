@@ -3,8 +3,8 @@
 
 #include "bullet_sim_core/description_error.h"
 #include "bullet_sim_core/urdf_parser.h"
+#include "bullet_sim_core/testing/error_of.h"
 
-using bullet_sim::DescriptionError;
 using bullet_sim::JointType;
 using bullet_sim::parseUrdf;
 using bullet_sim::ResourceResolver;
@@ -42,14 +42,7 @@ std::string replace(std::string s, const std::string& from, const std::string& t
   return s.replace(pos, from.size(), to);
 }
 
-std::string errorOf(const std::string& xml) {
-  try {
-    parseUrdf(xml, "arm.urdf", ResourceResolver());
-  } catch (const DescriptionError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+std::string errorOf(const std::string& xml) { return bullet_sim::errorOf([&] { parseUrdf(xml, "arm.urdf", ResourceResolver()); }); }
 
 }  // namespace
 

@@ -13,6 +13,7 @@
 #include "bullet_sim_core/urdf_parser.h"
 #include "bullet_sim_plugins/katana_gripper_config.h"
 #include "bullet_sim_plugins/katana_gripper_controller.h"
+#include "bullet_sim_core/testing/error_of.h"
 
 namespace bullet_sim {
 namespace {
@@ -301,14 +302,7 @@ KatanaGripperConfig configOf(const std::string& plugin) {
   return parseKatanaGripperConfig(m.plugins.at(0), m);
 }
 
-std::string errorOf(const std::string& plugin) {
-  try {
-    configOf(plugin);
-  } catch (const DescriptionError& e) {
-    return e.what();
-  }
-  return "";
-}
+std::string errorOf(const std::string& plugin) { return bullet_sim::errorOf([&] { configOf(plugin); }); }
 
 const std::string kAt = "katana.urdf: <gazebo>/<plugin name='gazebo_ros_katana_gripper' "
                         "filename='libgazebo_ros_katana_gripper.so'>";

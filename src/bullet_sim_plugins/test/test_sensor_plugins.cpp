@@ -9,6 +9,7 @@
 #include "bullet_sim_core/urdf_parser.h"
 #include "bullet_sim_plugins/camera_plugin.h"
 #include "bullet_sim_plugins/laser_plugin.h"
+#include "bullet_sim_core/testing/error_of.h"
 
 namespace bullet_sim {
 namespace {
@@ -18,16 +19,6 @@ SensorDescription sensorOf(const std::string& block, const std::string& link = "
   const ModelDescription m = parseUrdf("<robot name='m'><link name='" + link + "'/>" + block + "</robot>",
                                        "model.urdf", ResourceResolver(), "");
   return m.sensors.at(0);
-}
-
-template <class F>
-std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const DescriptionError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 std::string laser(const std::string& plugin) {

@@ -8,6 +8,7 @@
 #include "bullet_sim_core/sdf_parser.h"
 #include "bullet_sim_core/urdf_parser.h"
 #include "bullet_sim_plugins/wheel_drive_config.h"
+#include "bullet_sim_core/testing/error_of.h"
 
 namespace bullet_sim {
 namespace {
@@ -44,17 +45,6 @@ std::string skidSteer(const std::string& children) {
          "<leftFrontJoint>lf</leftFrontJoint><rightFrontJoint>rf</rightFrontJoint>"
          "<leftRearJoint>lr</leftRearJoint><rightRearJoint>rr</rightRearJoint>" +
          children + "</plugin></gazebo>";
-}
-
-// The DescriptionError message of `f`, or "" if it did not throw one.
-template <class F>
-std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const DescriptionError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 TEST(DiffDriveConfig, DefaultsAreUpstreams) {

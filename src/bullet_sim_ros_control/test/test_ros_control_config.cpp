@@ -7,6 +7,7 @@
 #include "bullet_sim_core/resource_resolver.h"
 #include "bullet_sim_core/urdf_parser.h"
 #include "bullet_sim_ros_control/ros_control_config.h"
+#include "bullet_sim_core/testing/error_of.h"
 
 namespace bullet_sim {
 namespace {
@@ -21,16 +22,6 @@ ModelDescription robot(const std::string& extra) {
     <joint name="elbow" type="continuous"><parent link="upper"/><child link="lower"/></joint>)" +
                           extra + "</robot>";
   return parseUrdf(xml, "arm.urdf", ResourceResolver(), "");
-}
-
-template <class F>
-std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const DescriptionError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 TEST(RosControlConfig, DefaultsAreGazeboRosControls) {
