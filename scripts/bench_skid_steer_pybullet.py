@@ -59,11 +59,6 @@ def gazebo_friction(root):
     return mu
 
 
-def yaw_of(q):
-    x, y, z, w = q
-    return math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))
-
-
 def heading_mod_90(heading):
     return math.degrees(heading) % 90.0
 
@@ -176,13 +171,13 @@ def main():
     yaw_sum = fwd_sum = lat_sum = 0.0
     zs, tilts = [], []
     trace, bin_yaw, bin_fwd = [], 0.0, 0.0
-    heading = last_yaw = yaw_of(root_state()[1])
+    heading = last_yaw = p.getEulerFromQuaternion(root_state()[1])[2]
     done = 0
     for i in range(steps):
         p.stepSimulation(physicsClientId=c)
         done = i + 1
         pos, orn, v, w = root_state()
-        yaw = yaw_of(orn)
+        yaw = p.getEulerFromQuaternion(orn)[2]
         heading += math.remainder(yaw - last_yaw, 2 * math.pi)
         last_yaw = yaw
         hx, hy = math.cos(yaw), math.sin(yaw)

@@ -7,12 +7,9 @@ import unittest
 
 import rospy
 import rostest
+from bullet_sim_testing.mobile import yaw_of as yaw
 from sensor_msgs.msg import JointState
 from tf2_msgs.msg import TFMessage
-
-
-def yaw(q):
-    return math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
 
 
 class RobotStatePublisherTest(unittest.TestCase):
