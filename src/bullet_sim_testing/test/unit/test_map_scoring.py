@@ -6,7 +6,7 @@ import sys
 import pytest
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), '..', '..', 'src'))
-from hector_style_mapping_tools.map_scoring import compose, interpolate, map_alignment, relative  # noqa: E402
+from bullet_sim_testing.map_scoring import compose, interpolate, map_alignment, relative  # noqa: E402
 
 
 class Box:
