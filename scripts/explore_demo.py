@@ -123,7 +123,7 @@ class Watch:
     def map_accuracy(self, start_pose):
         """map_alignment of the last map's occupied cells (in the world through the start pose)
         against the walls: (share within 0.1 m of a wall, mean distance, share of visible faces)."""
-        from hector_style_mapping_tools.map_scoring import map_alignment
+        from bullet_sim_testing.map_scoring import map_alignment
         np = self.np
         with self.lock:
             msg, seen_from = self.last_map, [(px, py) for _, px, py in self.path[::20]]

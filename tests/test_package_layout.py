@@ -2,6 +2,7 @@
 
 - bullet_sim_core has no ROS in it: its sources include no ROS header and its library links no ROS
   library (Debian installs ROS headers under /usr/include, so the build alone would not stop one);
+  nor have navigation_core and hector_style_mapping_core (the SLAM core both mapping nodes build on);
 - dependencies point one way: core <- plugins <- ros_control <- node, and only bullet_sim_ros_control
   depends on sim_control;
 - no product package depends on a test-only package (they may list one as a test_depend);
@@ -74,23 +75,55 @@ def test_the_core_library_links_no_ros_library():
     assert [n for n in needed if ROS_LIBRARY.search(n)] == []
 
 
-def test_the_navigation_core_is_plain_cpp():
-    """navigation_core (costmaps, planners) includes only the C++ library and its own headers, and
-    its manifest names no ROS package."""
-    core = os.path.join(SRC, 'navigation_core')
-    sources = [p for folder in ('include', 'src', 'test')
-               for p in glob.glob(os.path.join(core, folder, '**', '*.*'), recursive=True) if p.endswith(('.h', '.cpp'))]
+def includes_outside(package, allowed):
+    """(sources scanned, 'file:line: header' for each #include of the package's C++ not matching `allowed`)."""
+    folder = os.path.join(SRC, package)
+    sources = [p for sub in ('include', 'src', 'test', 'bench')
+               for p in glob.glob(os.path.join(folder, sub, '**', '*.*'), recursive=True) if p.endswith(('.h', '.cpp'))]
     offenders = []
     for path in sources:
         with open(path) as f:
             for number, line in enumerate(f, 1):
                 m = re.match(r'\s*#\s*include\s*[<"]([^>"]+)[>"]', line)
-                if m and not re.match(r'^(navigation_core/|gtest/|[a-z_]+$)', m.group(1)):
+                if m and not re.match(allowed, m.group(1)):
                     offenders.append('%s:%d: %s' % (os.path.relpath(path, ROOT), number, m.group(1)))
+    return sources, offenders
+
+
+def test_the_navigation_core_is_plain_cpp():
+    """navigation_core (costmaps, planners) includes only the C++ library and its own headers, and
+    its manifest names no ROS package."""
+    sources, offenders = includes_outside('navigation_core', r'^(navigation_core/|gtest/|[a-z_]+$)')
     assert offenders == [], 'non-standard headers in navigation_core:\n' + '\n'.join(offenders)
     assert len(sources) >= 6  # the scan really looked at the package
     depends, tests = manifest('navigation_core')
     assert depends == set() and tests == {'gtest'}, (depends, tests)
+
+
+def test_the_hector_core_is_ros_free():
+    """hector_style_mapping_core (grids, scan matching, the SLAM loop; odometry_slam builds on it too)
+    includes only the C++ library, Eigen and its own headers, its manifest names no package but
+    Eigen, and its library links no ROS library."""
+    sources, offenders = includes_outside('hector_style_mapping_core', r'^(hector_style_mapping_core/|Eigen/|gtest/|[a-z_]+$)')
+    assert offenders == [], 'ROS (or unexpected) headers in hector_style_mapping_core:\n' + '\n'.join(offenders)
+    assert len(sources) >= 30  # the scan really looked at the package
+    depends, tests = manifest('hector_style_mapping_core')
+    assert depends == {'eigen'} and tests == {'gtest'}, (depends, tests)
+    library = os.path.join(ROOT, 'devel', 'lib', 'libhector_style_mapping_core.so')
+    assert os.path.isfile(library), 'build the workspace first (scripts/setup): no ' + library
+    needed = [line.split('[')[1].rstrip(']') for line in
+              subprocess.check_output(['readelf', '-d', library], text=True).splitlines() if '(NEEDED)' in line]
+    assert any('libstdc++' in n for n in needed), needed  # the check reads the right file
+    assert [n for n in needed if ROS_LIBRARY.search(n)] == []
+
+
+def test_both_slam_nodes_build_on_the_hector_core():
+    """hector_style_mapping and odometry_slam depend on hector_style_mapping_core as a package, and it
+    on neither of them."""
+    assert {'hector_style_mapping', 'odometry_slam'} - set(workspace_packages()) == set()
+    for package in ('hector_style_mapping', 'odometry_slam'):
+        assert 'hector_style_mapping_core' in manifest(package)[0], package
+    assert set(workspace_packages()) & manifest('hector_style_mapping_core')[0] == set()
 
 
 def test_simulator_dependencies_point_one_way():

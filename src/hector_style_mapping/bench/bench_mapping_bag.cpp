@@ -41,9 +41,9 @@
 #include <tf2/exceptions.h>
 #include <tf2_msgs/TFMessage.h>
 
-#include "hector_style_mapping/anchored_trajectory.h"
 #include "hector_style_mapping/ros/scan_conversion.h"
-#include "hector_style_mapping/slam_processor.h"
+#include "hector_style_mapping_core/anchored_trajectory.h"
+#include "hector_style_mapping_core/slam_processor.h"
 
 using hector_style_mapping::MapperOptions;
 using hector_style_mapping::ScanFilter;

@@ -17,10 +17,9 @@ from move_base_msgs.msg import MoveBaseActionGoal
 from nav_msgs.msg import OccupancyGrid
 from std_msgs.msg import String
 
-from hector_style_mapping_tools.map_scoring import map_alignment
-
 from bullet_sim_testing.exploration import ReachableArea, wall_clearance
 from bullet_sim_testing.gazebo import set_real_time_factor
+from bullet_sim_testing.map_scoring import map_alignment
 from bullet_sim_testing.navigation import NavigationChecks
 
 

@@ -19,9 +19,8 @@ import rospy
 from gazebo_msgs.srv import GetModelState
 from geometry_msgs.msg import PoseStamped, Twist
 
-from hector_style_mapping_tools.map_scoring import angle_diff, compose, interpolate, map_alignment, relative
-
 from bullet_sim_testing.gazebo import set_real_time_factor
+from bullet_sim_testing.map_scoring import angle_diff, compose, interpolate, map_alignment, relative
 from bullet_sim_testing.mobile import yaw_of
 from bullet_sim_testing.walls import load_walls
 

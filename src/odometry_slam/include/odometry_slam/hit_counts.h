@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "hector_style_mapping/occupancy_grid_map.h"
+#include "hector_style_mapping_core/occupancy_grid_map.h"
 
 namespace odometry_slam {
 

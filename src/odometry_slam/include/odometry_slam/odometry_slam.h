@@ -5,10 +5,10 @@
 
 #include <Eigen/Core>
 
-#include "hector_style_mapping/multi_resolution_map.h"
-#include "hector_style_mapping/pose_2d.h"
-#include "hector_style_mapping/scan_matcher.h"
-#include "hector_style_mapping/scan_points.h"
+#include "hector_style_mapping_core/multi_resolution_map.h"
+#include "hector_style_mapping_core/pose_2d.h"
+#include "hector_style_mapping_core/scan_matcher.h"
+#include "hector_style_mapping_core/scan_points.h"
 #include "odometry_slam/hit_counts.h"
 
 namespace odometry_slam {

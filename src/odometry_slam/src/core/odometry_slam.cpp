@@ -8,7 +8,7 @@
 
 #include <Eigen/LU>
 
-#include "hector_style_mapping/slam_processor.h"
+#include "hector_style_mapping_core/slam_processor.h"
 
 namespace odometry_slam {
 

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "hector_style_mapping/occupancy_grid_map.h"
+#include "hector_style_mapping_core/occupancy_grid_map.h"
 #include "odometry_slam/hit_counts.h"
 
 namespace odometry_slam {

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "hector_style_mapping_core/testing/synthetic_world.h"
 #include "odometry_slam/odometry_slam.h"
-#include "synthetic_world.h"  // hector_style_mapping's test world
 
 namespace odometry_slam {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <nav_msgs/OccupancyGrid.h>
 
-#include "hector_style_mapping/occupancy_grid_map.h"
+#include "hector_style_mapping_core/occupancy_grid_map.h"
 
 namespace hector_style_mapping {
 

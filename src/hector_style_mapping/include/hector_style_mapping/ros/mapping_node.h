@@ -18,10 +18,10 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
-#include "hector_style_mapping/anchored_trajectory.h"
 #include "hector_style_mapping/ros/node_options.h"
 #include "hector_style_mapping/ros/scan_input.h"
-#include "hector_style_mapping/slam_processor.h"
+#include "hector_style_mapping_core/anchored_trajectory.h"
+#include "hector_style_mapping_core/slam_processor.h"
 
 namespace hector_style_mapping {
 

@@ -6,8 +6,8 @@
 
 #include <ros/node_handle.h>
 
-#include "hector_style_mapping/mapper_options.h"
 #include "hector_style_mapping/ros/scan_conversion.h"
+#include "hector_style_mapping_core/mapper_options.h"
 
 namespace hector_style_mapping {
 

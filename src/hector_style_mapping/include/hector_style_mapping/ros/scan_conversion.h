@@ -6,7 +6,7 @@
 #include <Eigen/Geometry>
 #include <sensor_msgs/LaserScan.h>
 
-#include "hector_style_mapping/scan_points.h"
+#include "hector_style_mapping_core/scan_points.h"
 
 namespace hector_style_mapping {
 

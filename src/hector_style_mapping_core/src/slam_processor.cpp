@@ -1,0 +1,189 @@
+#include "hector_style_mapping_core/slam_processor.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/LU>
+
+#include "hector_style_mapping_core/correlative_search.h"
+
+namespace hector_style_mapping {
+
+namespace {
+
+bool hasFinitePoint(const ScanPoints& scan) {
+  return std::any_of(scan.points.begin(), scan.points.end(),
+                     [](const Eigen::Vector2d& point) { return point.allFinite(); });
+}
+
+}  // namespace
+
+Eigen::Matrix3d matchCovariance(const ScanMatchResult& match, const Eigen::Matrix3d& hessian) {
+  const Eigen::Vector3d prior_information(1.0 / SlamProcessor::kUnconstrainedTranslationVariance,
+                                          1.0 / SlamProcessor::kUnconstrainedTranslationVariance,
+                                          1.0 / SlamProcessor::kUnconstrainedRotationVariance);
+  const double residual_variance = match.squared_residual_sum / std::max(match.point_count - 3, 1);
+  const Eigen::Matrix3d information = hessian + Eigen::Matrix3d(prior_information.asDiagonal());
+  Eigen::Matrix3d covariance = residual_variance * information.inverse();
+  // Exactly symmetric, whatever the rounding of the inverse.
+  return 0.5 * (covariance + covariance.transpose());
+}
+
+SlamProcessor::SlamProcessor(const MapperOptions& options) : options_(options), map_(options) {}
+
+void SlamProcessor::reset(const Pose2D& start) {
+  map_.clear();
+  map_stale_ = false;
+  pose_ = {start.x, start.y, normalizeAngle(start.theta)};
+  previous_pose_ = pose_;
+  last_map_update_pose_ = pose_;
+  covariance_.setZero();
+  last_match_ = ScanMatchResult{};
+  map_updated_by_last_scan_ = false;
+  map_update_count_ = 0;
+  search_count_ = 0;
+  window_.clear();
+  unmapped_scan_.reset();
+  field_stale_ = true;
+  recent_intervals_.clear();
+  last_interval_ = 0.0;
+  loop_closure_ = LoopClosure{};
+}
+
+double motionPriorWeight(double weight, double last_interval, double interval) {
+  const bool known = last_interval > 0.0 && interval > 0.0 && std::isfinite(last_interval) && std::isfinite(interval);
+  return known ? weight * std::min(last_interval, interval) / std::max(last_interval, interval) : weight;
+}
+
+ScanMatchResult matchThroughLevels(const ScanMatcher& matcher, const MultiResolutionMap& map, const ScanPoints& scan,
+                                   const Pose2D& start) {
+  ScanMatchResult match;
+  match.pose = start;
+  for (int level = map.levels() - 1; level >= 0; --level) {
+    const int iterations =
+        level == 0 ? SlamProcessor::kFinestLevelIterations : SlamProcessor::kCoarseLevelIterations;
+    match = matcher.matchWithDetails(map.level(level), scan, match.pose, iterations);
+  }
+  return match;
+}
+
+ScanMatchResult SlamProcessor::matchThroughLevels(const ScanPoints& scan, const Pose2D& start) const {
+  return hector_style_mapping::matchThroughLevels(matcher_, map_, scan, start);
+}
+
+void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double seconds_since_last_scan) {
+  if (!hasFinitePoint(scan)) {
+    map_updated_by_last_scan_ = false;
+    return;
+  }
+
+  const bool guess_usable =
+      guess != nullptr && std::isfinite(guess->x) && std::isfinite(guess->y) && std::isfinite(guess->theta);
+  const bool search = options_.search_window_linear > 0.0 && options_.search_window_angular > 0.0;
+  const Pose2D start = guess_usable ? *guess : pose_;
+  if (search && !window_.empty()) {
+    // The search decides where the scan fits the recent scans best.
+    if (field_stale_) {
+      std::vector<PlacedScan> scans = window_;
+      if (unmapped_scan_) scans.push_back(*unmapped_scan_);
+      field_.build(scans);
+      field_stale_ = false;
+    }
+    // The guess, or else constant velocity per scan, for the translation: along a featureless corridor it
+    // decides.
+    const Eigen::Vector2d expected = guess_usable ? Eigen::Vector2d(guess->x, guess->y)
+                                                  : Eigen::Vector2d(2.0 * pose_.x - previous_pose_.x,
+                                                                    2.0 * pose_.y - previous_pose_.y);
+    const TranslationPrior prior{expected, guess_usable ? options_.search_motion_weight
+                                                        : motionPriorWeight(options_.search_motion_weight,
+                                                                            last_interval_, seconds_since_last_scan)};
+    const SearchResult found =
+        correlativeSearch(field_, scan, start, searchWindow(seconds_since_last_scan), prior);
+    // Gauss-Newton on the finest level then settles it on the whole map, unless it wanders off further than
+    // the search's own resolution: then the map disagrees with the recent scans (drift), and they know better.
+    // A map not yet redrawn after a loop closed is not asked.
+    last_match_ = matcher_.matchWithDetails(map_.finest(), scan, found.pose, map_stale_ ? 0 : kFinestLevelIterations);
+    if (std::hypot(last_match_.pose.x - found.pose.x, last_match_.pose.y - found.pose.y) >
+            LikelihoodField::kResolution ||
+        std::abs(angleDifference(last_match_.pose.theta, found.pose.theta)) > found.angle_step) {
+      last_match_ = matcher_.matchWithDetails(map_.finest(), scan, found.pose, 0);
+    }
+    ++search_count_;
+  } else {
+    last_match_ = matchThroughLevels(scan, start);
+  }
+
+  previous_pose_ = pose_;
+  pose_ = last_match_.pose;
+  last_interval_ = seconds_since_last_scan;
+  covariance_ = matchCovariance(last_match_, matcher_.surfaceNormalHessian(map_.finest(), scan, pose_));
+
+  map_updated_by_last_scan_ = map_update_count_ == 0 || movedEnoughForMapUpdate();
+  if (search) {
+    // Turning on the spot, map updates lie a turn apart: the scan just matched overlaps the next one most.
+    if (map_updated_by_last_scan_) {
+      unmapped_scan_.reset();
+    } else {
+      unmapped_scan_ = PlacedScan{pose_, scan};
+    }
+    field_stale_ = true;
+  }
+  if (map_updated_by_last_scan_) {
+    if (!map_stale_) map_.updateByScan(scan, pose_);  // else the redraw brings it
+    last_map_update_pose_ = pose_;
+    if (search) {
+      window_.push_back({pose_, scan});
+      if (window_.size() > kSearchedScans) window_.erase(window_.begin());
+      field_stale_ = true;
+    }
+    ++map_update_count_;
+    if (search && options_.loop_closure && loop_closure_.addKeyframe(scan, pose_)) adoptOptimisedKeyframes();
+  }
+}
+
+void SlamProcessor::adoptOptimisedKeyframes() {
+  const int keyframes = loop_closure_.keyframes();
+  const Pose2D before = pose_;
+  pose_ = loop_closure_.pose(keyframes - 1);
+  // The pose before moves with this one, so that the motion prior keeps the robot's velocity.
+  previous_pose_ = compose(pose_, between(before, previous_pose_));
+  last_map_update_pose_ = pose_;
+  map_stale_ = true;  // redrawn when next asked for: loops close every few keyframes, maps are read less often
+  window_.clear();
+  unmapped_scan_.reset();
+  for (int i = std::max(keyframes - static_cast<int>(kSearchedScans), 0); i < keyframes; ++i)
+    window_.push_back({loop_closure_.pose(i), loop_closure_.scan(i)});
+  field_stale_ = true;
+}
+
+SearchWindow SlamProcessor::searchWindow(double seconds_since_last_scan) {
+  if (seconds_since_last_scan > 0.0 && std::isfinite(seconds_since_last_scan)) {
+    recent_intervals_.push_back(seconds_since_last_scan);
+    if (recent_intervals_.size() > kRecentIntervals) recent_intervals_.erase(recent_intervals_.begin());
+  }
+  SearchWindow window{options_.search_window_linear, options_.search_window_angular};
+  if (recent_intervals_.empty()) return window;
+  std::vector<double> sorted = recent_intervals_;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2), sorted.end());
+  const double interval = sorted[sorted.size() / 2];
+  window.linear = std::min(window.linear, kPlausibleSpeed * interval);
+  window.angular = std::min(window.angular, kPlausibleTurnRate * interval);
+  return window;
+}
+
+const MultiResolutionMap& SlamProcessor::map() const {
+  if (map_stale_) {
+    map_.clear();
+    for (int i = 0; i < loop_closure_.keyframes(); ++i) map_.updateByScan(loop_closure_.scan(i), loop_closure_.pose(i));
+    map_stale_ = false;
+  }
+  return map_;
+}
+
+bool SlamProcessor::movedEnoughForMapUpdate() const {
+  const double distance = std::hypot(pose_.x - last_map_update_pose_.x, pose_.y - last_map_update_pose_.y);
+  const double rotation = std::abs(angleDifference(pose_.theta, last_map_update_pose_.theta));
+  return distance > options_.map_update_distance_thresh || rotation > options_.map_update_angle_thresh;
+}
+
+}  // namespace hector_style_mapping
