@@ -122,6 +122,12 @@ bool Reader::isSet(const std::string& name) const {
   return find(name, nullptr) != nullptr;
 }
 
+std::string Reader::searchPath(const std::string& name) const {
+  if (!nh_) return isSet(name) ? name : "";
+  std::string found;
+  return nh_->searchParam(name, found) ? found : "";
+}
+
 std::string Reader::path(const std::string& name) const {
   if (nh_) return nh_->resolveName(name);
   return (!ns_.empty() && ns_.back() == '/' ? ns_ : ns_ + "/") + name;

@@ -124,6 +124,26 @@ TEST(Reader, UnknownParametersAreTheOnesNeverAskedForWithTheNearestName) {
   EXPECT_EQ(params.unknown({"controler_frequncy"}), std::vector<std::string>{});  // read elsewhere
 }
 
+TEST(Reader, SearchFindsTheNearestUpTheNamespacesAsSearchParamDoes) {
+  const std::string ns = privateNh().getNamespace();
+  ros_params::Reader params(ros::NodeHandle("~inflation"));
+  double radius = 0, scaling = 0, rate = 0, absent = 1.5;
+  EXPECT_TRUE(params.search("cost_scaling_factor", &scaling));  // in its own namespace
+  EXPECT_DOUBLE_EQ(scaling, 10.0);
+  EXPECT_TRUE(params.search("rate", &rate));  // one level up
+  EXPECT_DOUBLE_EQ(rate, 40.0);
+  EXPECT_TRUE(params.search("robot_radius", &radius));  // at the root
+  EXPECT_DOUBLE_EQ(radius, 0.3);
+  EXPECT_EQ(params.searchPath("robot_radius"), "/robot_radius");
+  EXPECT_FALSE(params.search("set_nowhere", &absent));
+  EXPECT_DOUBLE_EQ(absent, 1.5);
+  EXPECT_TRUE(params.ok());
+  bool wrong = false;
+  EXPECT_FALSE(params.search("frame", &wrong));  // found one level up, of the wrong type
+  EXPECT_EQ(params.problems(), ns + "/frame: expected true or false, got the string '/map'");
+  EXPECT_EQ(params.unknown(), std::vector<std::string>{ns + "/inflation/radius"});  // searched names count as read
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {

@@ -5,6 +5,7 @@
 //   options.rate = params.get("rate", 20.0);                   // the same, returning the value
 //   params.readRenamed("max_vel_trans", "max_trans_vel", &v);  // the old name honoured, with a warning
 //   params.require("joint", &joint, "the name of a joint");    // absent is a problem too
+//   params.search("robot_radius", &radius);                    // the nearest up the namespaces
 //   if (!params.ok()) ROS_FATAL("%s", params.problems().c_str());
 //   for (const auto& line : params.unknown()) ROS_WARN("%s: no parameter of this node", line.c_str());
 // A parameter of the wrong type is a problem naming its full path, what was expected and what was
@@ -70,6 +71,21 @@ class Reader {
     readRenamed(name, old_name, &value);
     return value;
   }
+
+  // ros::NodeHandle::searchParam's reading: the nearest `name` from the namespace up to the root
+  // ("~global_costmap/robot_radius", then "~robot_radius", then "/robot_radius"), read as read()
+  // reads it, with the path where it was found in problems. A tree holds only its own namespace.
+  template <class T>
+  bool search(const std::string& name, T* value) {
+    const std::string found = searchPath(name);
+    const std::size_t asked = names_.size();
+    const bool got = !found.empty() && read(found, value);
+    names_.resize(asked);  // recorded as asked for, not by where it was found
+    names_.push_back(name);
+    return got;
+  }
+  // Where search finds `name` (a full path), or "" when nothing up the namespaces sets it.
+  std::string searchPath(const std::string& name) const;
 
   // Like read, and a problem when the parameter is not set: "<path>: required parameter missing; expected <what>".
   template <class T>
