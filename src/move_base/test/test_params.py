@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """move_base reads its parameters through ros_params: a value of the wrong type is an error naming
 its full path, what was expected and what was found (the default is used, move_base keeps going); a
-misspelt parameter, in move_base's namespace or a planner's, is a warning with the nearest name it
-reads; upstream's parameters it accepts without effect, and the namespaces of its components, are
-not warned about."""
+misspelt parameter, in move_base's namespace, a planner's or a costmap layer's, is a warning with the
+nearest name it reads; upstream's parameters it accepts without effect, and the namespaces of its
+components, are not warned about; a layer type it does not have is an error naming those it has."""
 import os
 import signal
 import subprocess
@@ -22,7 +22,13 @@ PARAMS = {
     'global_costmap': {'global_frame': 'odom', 'robot_base_frame': 'base_link', 'rolling_window': True,
                        'width': 4, 'height': 4},
     'local_costmap': {'global_frame': 'odom', 'robot_base_frame': 'base_link', 'rolling_window': True,
-                      'width': 3, 'height': 3},
+                      'width': 3, 'height': 3,
+                      'plugins': [{'name': 'obstacles', 'type': 'costmap_2d::ObstacleLayer'},
+                                  {'name': 'people', 'type': 'social_navigation_layers::ProxemicLayer'},
+                                  {'name': 'inflation', 'type': 'costmap_2d::InflationLayer'}],
+                      'obstacles': {'observation_sources': 'scan', 'max_obstacle_height': 0.6, 'raytrace_range': 3.0,
+                                    'scan': {'data_type': 'LaserScan', 'obstacle_range': 'far', 'marknig': True}},
+                      'inflation': {'inflation_radius': 0.3, 'inflation_radiuss': 0.5}},
 }
 
 
@@ -48,18 +54,33 @@ class MoveBaseParamsTest(unittest.TestCase):
         self.assertIn("/mb/planner_patience: expected a number, got the string 'five'; using the default.",
                       self.output)
         self.assertIn('/mb/NavfnROS/allow_unknown: expected true or false, got 1; using the default.', self.output)
+        self.assertIn("/mb/local_costmap/obstacles/scan/obstacle_range: expected a number, got the string 'far'; "
+                      "using the default.", self.output)
+
+    def test_a_layer_type_it_does_not_have_is_an_error_naming_the_types_it_has(self):
+        self.assertIn('/mb/local_costmap/plugins: layer people has type social_navigation_layers::ProxemicLayer, '
+                      'which this move_base does not have (it has costmap_2d::InflationLayer, '
+                      'costmap_2d::ObstacleLayer, costmap_2d::StaticLayer, costmap_2d::VoxelLayer); the layer is '
+                      'left out.', self.output)
 
     def test_misspelt_parameters_are_warned_with_the_nearest_name(self):
         self.assertIn('/mb/controler_frequency (did you mean controller_frequency?) is no parameter that move_base '
                       'reads: it has no effect.', self.output)
         self.assertIn('/mb/TrajectoryPlannerROS/max_vel_xx (did you mean max_vel_x?) is no parameter that '
                       'move_base reads', self.output)
+        # in a layer's namespace and in an observation source's
+        self.assertIn('/mb/local_costmap/inflation/inflation_radiuss (did you mean inflation_radius?) is no '
+                      'parameter that move_base reads', self.output)
+        self.assertIn('/mb/local_costmap/obstacles/scan/marknig (did you mean marking?) is no parameter that '
+                      'move_base reads', self.output)
 
     def test_what_it_reads_or_accepts_is_not_warned_about(self):
         warned = [line for line in self.output.splitlines() if 'is no parameter that move_base reads' in line]
-        self.assertEqual(len(warned), 2, '\n'.join(warned))
+        self.assertEqual(len(warned), 4, '\n'.join(warned))
         for name in ('heading_scoring', 'vx_samples', 'visualize_potential', 'conservative_reset_dist',
-                     'global_costmap', 'controller_frequency:'):
+                     'global_costmap', 'controller_frequency:', 'local_costmap/obstacles/max_obstacle_height',
+                     'local_costmap/obstacles/observation_sources', 'local_costmap/plugins',
+                     'local_costmap/obstacles/raytrace_range'):  # searched for by the sources
             self.assertNotIn('/mb/' + name, '\n'.join(warned))
         self.assertNotIn('vx_samples: expected', self.output)  # 6.0 is a whole number: an integer
 

@@ -1,7 +1,8 @@
 #pragma once
 // costmap_2d's Costmap2DROS: a layered costmap named `name` (global_costmap, local_costmap) whose
 // parameters live in ~name, with its layers from the `plugins` list or, without one, from the
-// pre-Hydro parameters as costmap_2d translates them. It keeps itself up to date at
+// pre-Hydro parameters as costmap_2d translates them (costmap_plugins.h); each layer's ROS side is
+// found by its type name (layer_registry.h, src/layers/). It keeps itself up to date at
 // update_frequency (sim time) in a thread of its own and publishes ~name/costmap,
 // ~name/costmap_updates (at publish_frequency) and ~name/footprint.
 #include <ros/ros.h>
@@ -11,18 +12,15 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
 
-#include <map_msgs/OccupancyGridUpdate.h>
-#include <nav_msgs/OccupancyGrid.h>
-#include <sensor_msgs/LaserScan.h>
-#include <sensor_msgs/PointCloud2.h>
-
+#include "move_base/costmap_layer.h"
 #include "navigation_core/layered_costmap.h"
+#include "navigation_core/legacy_costmap_params.h"
 #include "navigation_core/local_planner.h"
-#include "navigation_core/static_layer.h"
 
 namespace move_base {
 
@@ -56,42 +54,28 @@ class CostmapROS {
   void resetObstaclesOutside(double x, double y, double size);
 
  private:
-  struct Source;  // an observation source
-
-  void readLayers();
-  void readObstacleLayer(const ros::NodeHandle& layer_nh, bool first);
-  void onMap(const nav_msgs::OccupancyGridConstPtr& map);
-  void onMapUpdate(const map_msgs::OccupancyGridUpdateConstPtr& update);
-  void onScan(Source& source, const sensor_msgs::LaserScanConstPtr& scan);
-  void onCloud(Source& source, const sensor_msgs::PointCloud2ConstPtr& cloud);
-  void queue(Source& source, const std::string& frame, const ros::Time& stamp,
-             std::vector<navigation_core::Point3> points);
+  void addLayer(const navigation_core::LayerSpec& spec);
   void updateLoop();
   void updateMap();  // under mutex_
-  void keepObservations(Source& source, const ros::Time& now);  // under mutex_
   void publishCostmap(bool full);
   void publishFootprint(const navigation_core::Pose2& pose);
 
   std::string name_;
   tf2_ros::Buffer& tf_;
   ros::NodeHandle nh_;  // ~name
-  std::string global_frame_, base_frame_;
+  std::string global_frame_ = "map", base_frame_ = "base_link";
   double transform_tolerance_ = 0.3, update_frequency_ = 5.0, publish_frequency_ = 0.0;
   bool rolling_window_ = false, always_send_full_costmap_ = false;
   navigation_core::Footprint footprint_;
   double circumscribed_radius_ = 0.0;
 
-  // Layers
   navigation_core::LayeredCostmapOptions options_;
   std::unique_ptr<navigation_core::LayeredCostmap> layers_;
-  bool has_static_layer_ = false, first_map_only_ = false, have_map_ = false;
-  navigation_core::StaticLayerOptions static_options_;
-  std::string map_frame_;
-  nav_msgs::OccupancyGrid map_;  // the static layer's map, kept for updates
-  std::vector<std::unique_ptr<Source>> sources_;
+  std::deque<LayerContext> contexts_;  // the plugins' (a deque: layers keep pointers to theirs)
+  std::set<std::string> kinds_seen_;
+  std::vector<std::unique_ptr<CostmapLayer>> plugins_;
 
   mutable std::mutex mutex_;
-  std::vector<ros::Subscriber> subscribers_;
   ros::Publisher costmap_pub_, updates_pub_, footprint_pub_;
   std::atomic<bool> running_{true};
   std::thread thread_;
