@@ -24,6 +24,7 @@
 #include "bullet_sim_core/sdf_parser.h"
 #include "bullet_sim_plugins/plugin_registry.h"
 #include "publish_thread/no_delay.h"
+#include "ros_params/reader.h"
 
 namespace {
 
@@ -120,7 +121,9 @@ int main(int argc, char** argv) {
   bullet_sim::SimulatorOptions options;
   options.paused = arguments.paused;
   options.timing = arguments.timing;
-  gazebo.param("pub_clock_frequency", options.pub_clock_frequency, 0.0);
+  ros_params::Reader gazebo_params(gazebo);
+  gazebo_params.read("pub_clock_frequency", &options.pub_clock_frequency, "a rate in Hz (0: every step)");
+  for (const std::string& problem : gazebo_params.problemList()) ROS_ERROR("%s; using the default.", problem.c_str());
   // A node started alone still gives sim time to everyone who asks for it.
   if (!ros::param::has("/use_sim_time")) ros::param::set("/use_sim_time", true);
 

@@ -13,6 +13,7 @@
 #include "bullet_sim_plugins/ros_conversions.h"
 #include "bullet_sim_plugins/wheel_drive_plugin.h"
 #include "publish_thread/publish_thread.h"
+#include "ros_params/reader.h"
 
 namespace bullet_sim {
 namespace {
@@ -76,8 +77,9 @@ WheelDrivePlugin::WheelDrivePlugin(PhysicsModel& model, WheelDriveSettings setti
                            e.what());
   }
   // tf_prefix as gazebo_plugins reads it (tf::getPrefixParam: searched upward from the namespace).
-  std::string key;
-  if (node_.searchParam("tf_prefix", key)) node_.getParam(key, tf_prefix_);
+  ros_params::Reader params(node_);
+  params.search("tf_prefix", &tf_prefix_);
+  for (const std::string& problem : params.problemList()) ROS_ERROR("%s; no tf_prefix used.", problem.c_str());
   odometry_frame_ = resolveFrame(tf_prefix_, settings_.odometry_frame);
   base_frame_ = resolveFrame(tf_prefix_, settings_.robot_base_frame);
   if ((settings_.publish_odometry && settings_.publish_odom_tf) || settings_.publish_wheel_tf)

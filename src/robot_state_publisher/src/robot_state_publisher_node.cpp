@@ -19,6 +19,7 @@
 #include <urdf/model.h>
 
 #include "publish_thread/no_delay.h"
+#include "ros_params/reader.h"
 #include "robot_state_publisher/kinematic_tree.h"
 
 namespace robot_state_publisher {
@@ -40,11 +41,13 @@ geometry_msgs::TransformStamped toMessage(const KDL::Frame& f, const std::string
 class StatePublisher {
  public:
   explicit StatePublisher(const KinematicTree& tree) : tree_(tree), private_("~") {
-    double frequency = private_.param("publish_frequency", 50.0);
-    use_tf_static_ = private_.param("use_tf_static", true);
-    ignore_timestamp_ = private_.param("ignore_timestamp", false);
-    std::string key;
-    if (private_.searchParam("tf_prefix", key)) ros::param::get(key, tf_prefix_);
+    // A value of the wrong type is said (upstream silently takes the default) and the default used.
+    ros_params::Reader params(private_);
+    const double frequency = params.get("publish_frequency", 50.0);
+    params.read("use_tf_static", &use_tf_static_);
+    params.read("ignore_timestamp", &ignore_timestamp_);
+    params.search("tf_prefix", &tf_prefix_);
+    for (const std::string& problem : params.problemList()) ROS_ERROR("%s; using the default.", problem.c_str());
     publish_interval_ = ros::Duration(1.0 / std::max(frequency, 1.0));
     for (const std::string& joint : tree_.floatingJoints())
       ROS_INFO("Floating joint %s is left out: joint_states cannot say where its child link is.", joint.c_str());

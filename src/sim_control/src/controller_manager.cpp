@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 
+#include "ros_params/reader.h"
 #include "sim_control/controller_registry.h"
 
 namespace sim_control {
@@ -68,7 +69,9 @@ bool ControllerManager::load(const std::string& name, std::string& error) {
   if (find(name)) return fail("A controller named '" + name + "' was already loaded inside the controller manager", error);
   ros::NodeHandle controller_nh(robot_nh_, name);
   std::string type;
-  if (!controller_nh.getParam("type", type)) {
+  ros_params::Reader params(controller_nh);
+  if (!params.read("type", &type, "a controller type such as effort_controllers/JointPositionController")) {
+    if (!params.ok()) return fail("Could not load controller '" + name + "': " + params.problems(), error);
     return fail("Could not load controller '" + name +
                     "' because the type was not specified. Did you load the controller configuration on the "
                     "parameter server (namespace: '" + controller_nh.getNamespace() + "')?",

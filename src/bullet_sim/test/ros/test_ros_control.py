@@ -133,6 +133,13 @@ class RosControlTest(unittest.TestCase):
         self.assertFalse(self.load('missing_rate_controller'))
         self.assertTrue(self.logged('/rig/missing_rate_controller/publish_rate'))
 
+    def test_a_type_that_is_no_string_is_named(self):
+        self.assertFalse(self.load('numbered_type_controller'))
+        self.assertTrue(self.logged("Could not load controller 'numbered_type_controller': "
+                                    "/rig/numbered_type_controller/type: expected a controller type such as "
+                                    "effort_controllers/JointPositionController, got 3"))
+        self.assertNotIn('numbered_type_controller', self.states())
+
     def test_missing_type_says_where_it_looked(self):
         self.assertFalse(self.load('never_configured'))
         self.assertTrue(self.logged("Could not load controller 'never_configured' because the type was not specified"))
