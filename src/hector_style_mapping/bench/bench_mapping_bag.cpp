@@ -39,6 +39,8 @@
 #include <sensor_msgs/LaserScan.h>
 #include <tf2/buffer_core.h>
 #include <tf2/exceptions.h>
+#include <tf2/utils.h>
+#include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 #include <tf2_msgs/TFMessage.h>
 
 #include "hector_style_mapping/ros/scan_conversion.h"
@@ -80,10 +82,6 @@ struct StampedPose {
   double t;
   hector_style_mapping::Pose2D pose;
 };
-
-double yawOf(const geometry_msgs::Quaternion& q) {
-  return std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
-}
 
 // The truth at time t: a sample at that stamp (a log's truth comes with each scan), else linearly
 // interpolated; false outside the samples or across a gap > 0.1 s.
@@ -259,7 +257,7 @@ int main(int argc, char** argv) {
       if (odometry)
         truth.push_back({odometry->header.stamp.toSec(),
                          {odometry->pose.pose.position.x, odometry->pose.pose.position.y,
-                          yawOf(odometry->pose.pose.orientation)}});
+                          tf2::getYaw(odometry->pose.pose.orientation)}});
       continue;
     }
     if (m.getTopic() == "/tf" || m.getTopic() == "/tf_static") {

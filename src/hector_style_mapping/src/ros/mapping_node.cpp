@@ -8,6 +8,7 @@
 #include <geometry_msgs/PoseStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <tf2/LinearMath/Transform.h>
+#include <tf2/utils.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 
 #include "hector_style_mapping/ros/map_message.h"
@@ -160,7 +161,7 @@ void MappingNode::scanCallback(const sensor_msgs::LaserScan::ConstPtr& scan) {
   std::optional<Pose2D> planar_odometry;
   if (odometry)
     planar_odometry = Pose2D{odometry->transform.translation.x, odometry->transform.translation.y,
-                             yawOf(odometry->transform.rotation)};
+                             tf2::getYaw(odometry->transform.rotation)};
 
   const auto start = std::chrono::steady_clock::now();
   const ScanConversionReport report = scanToPoints(*scan, laser_in_base, options_.filter, &scan_points_);
@@ -194,7 +195,7 @@ void MappingNode::scanCallback(const sensor_msgs::LaserScan::ConstPtr& scan) {
     try {
       const geometry_msgs::TransformStamped t =
           tf_buffer_.lookupTransform(options_.map_frame, options_.base_frame, stamp, kTfWait);
-      guess = {t.transform.translation.x, t.transform.translation.y, yawOf(t.transform.rotation)};
+      guess = {t.transform.translation.x, t.transform.translation.y, tf2::getYaw(t.transform.rotation)};
       guess_pointer = &guess;
     } catch (const tf2::TransformException& e) {
       ROS_WARN_THROTTLE(5.0, "hector_mapping: use_tf_pose_start_estimate: no tf %s -> %s at %.3f (%s); starting "
@@ -315,7 +316,7 @@ void MappingNode::appendTrajectory(const ros::Time& stamp) {
   const Pose2D& pose = slam_.pose();
   if (!trajectory_.poses.empty()) {
     const geometry_msgs::Pose& last = trajectory_.poses.back().pose;
-    const double turned = std::abs(normalizeAngle(pose.theta - yawOf(last.orientation)));
+    const double turned = std::abs(normalizeAngle(pose.theta - tf2::getYaw(last.orientation)));
     if (std::hypot(pose.x - last.position.x, pose.y - last.position.y) < kTrajectoryStep &&
         turned < kTrajectoryTurnStep)
       return;
@@ -391,7 +392,7 @@ void MappingNode::initialPoseCallback(const geometry_msgs::PoseWithCovarianceSta
       return;
     }
   }
-  initial_pose_ = {in_map.pose.position.x, in_map.pose.position.y, yawOf(in_map.pose.orientation)};
+  initial_pose_ = {in_map.pose.position.x, in_map.pose.position.y, tf2::getYaw(in_map.pose.orientation)};
   have_initial_pose_ = true;
   ROS_INFO("hector_mapping: next scan starts from the initial pose x %.3f y %.3f yaw %.3f", initial_pose_.x,
            initial_pose_.y, initial_pose_.theta);

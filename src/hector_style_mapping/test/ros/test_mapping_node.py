@@ -16,6 +16,7 @@ import time
 import unittest
 
 import numpy as np
+import PyKDL
 import rospy
 import rostest
 import tf2_ros
@@ -68,7 +69,7 @@ def ranges_from(x, y, yaw, beams, fov=2 * math.pi):
 
 
 def yaw_of(q):
-    return math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
+    return PyKDL.Rotation.Quaternion(q.x, q.y, q.z, q.w).GetRPY()[2]
 
 
 class MappingNodeTest(unittest.TestCase):

@@ -7,6 +7,7 @@
 
 #include <std_msgs/Float64.h>
 #include <tf2/LinearMath/Transform.h>
+#include <tf2/utils.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
 
 #include "hector_style_mapping/ros/scan_conversion.h"
@@ -115,7 +116,7 @@ std::optional<Pose2D> SlamGmappingNode::odometryAt(const ros::Time& stamp) {
   try {
     const geometry_msgs::TransformStamped t =
         tf_buffer_.lookupTransform(options_.odom_frame, options_.base_frame, stamp, kTfWait);
-    return Pose2D{t.transform.translation.x, t.transform.translation.y, hsm::yawOf(t.transform.rotation)};
+    return Pose2D{t.transform.translation.x, t.transform.translation.y, tf2::getYaw(t.transform.rotation)};
   } catch (const tf2::TransformException& e) {
     ROS_WARN_THROTTLE(5.0, "slam_gmapping: needs the robot's odometry as tf %s -> %s (~odom_frame -> ~base_frame), "
                       "and there is none at %.3f: %s. Scans are skipped until it comes. (Does the robot's driver "

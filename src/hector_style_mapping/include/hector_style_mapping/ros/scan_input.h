@@ -39,10 +39,6 @@ class ScanStamps {
   ros::Time last_;
 };
 
-inline double yawOf(const geometry_msgs::Quaternion& q) {
-  return std::atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z));
-}
-
 inline Eigen::Isometry3d isometryOf(const geometry_msgs::Transform& t) {
   Eigen::Isometry3d result = Eigen::Isometry3d::Identity();
   const auto& r = t.rotation;
