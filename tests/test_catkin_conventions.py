@@ -31,3 +31,23 @@ def test_every_rostest_file_is_registered_with_add_rostest():
         if not re.search(r'add_rostest(_gtest)?\((\S+ )?%s[ )]' % re.escape(relative), cmake):
             missing.append(os.path.relpath(test, SRC))
     assert missing == []
+
+
+# The folders a launch file, a URDF or `$(find pkg)/...` reaches into (catkin_lint does not check
+# that they are installed; an install space without them fails at the first roslaunch).
+RESOURCE_FOLDERS = {'launch', 'config', 'worlds', 'urdf', 'meshes', 'models', 'rviz', 'maps', 'param', 'boards',
+                    'www', 'vendor', 'examples'}
+
+
+def test_every_resource_folder_is_installed():
+    missing = []
+    for manifest in sorted(glob.glob(os.path.join(SRC, '**', 'package.xml'), recursive=True)):
+        package = os.path.dirname(manifest)
+        if '/tutorials/' in package or '/test/' in package:  # tutorials' own files, test data
+            continue
+        with open(os.path.join(package, 'CMakeLists.txt')) as f:
+            installed = ' '.join(re.findall(r'install\(DIRECTORY([^)]*)\)', f.read()))
+        for folder in sorted(RESOURCE_FOLDERS & set(os.listdir(package))):
+            if not re.search(r'(^|\s)%s/?(\s|$)' % folder, installed):
+                missing.append(os.path.relpath(os.path.join(package, folder), SRC))
+    assert missing == []
