@@ -71,11 +71,11 @@ class CostmapROS {
 
   navigation_core::LayeredCostmapOptions options_;
   std::unique_ptr<navigation_core::LayeredCostmap> layers_;
+  mutable std::mutex mutex_;  // before the plugins: their callbacks lock it until they are gone
   std::deque<LayerContext> contexts_;  // the plugins' (a deque: layers keep pointers to theirs)
   std::set<std::string> kinds_seen_;
   std::vector<std::unique_ptr<CostmapLayer>> plugins_;
 
-  mutable std::mutex mutex_;
   ros::Publisher costmap_pub_, updates_pub_, footprint_pub_;
   std::atomic<bool> running_{true};
   std::thread thread_;
