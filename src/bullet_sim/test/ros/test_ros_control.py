@@ -40,6 +40,12 @@ class RosControlTest(unittest.TestCase):
         cls.list_srv = rospy.ServiceProxy(CM + 'list_controllers', ListControllers)
         cls.log = []
         rospy.Subscriber('/rosout', Log, lambda m: cls.log.append(m.msg))
+        # The simulator's log reaches us only once this subscription has connected to it; until
+        # then a test could miss what it says. Have it say something until we hear it.
+        for _ in range(30):
+            cls.load_srv(name='never_configured')
+            if wait_until(lambda: any("'never_configured'" in m for m in cls.log), 0.5):
+                break
         cls.joints = {}
         rospy.Subscriber('/rig/joint_states', JointState, cls.on_joints)
         cls.publishers = {}
