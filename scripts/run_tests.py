@@ -8,13 +8,22 @@ driving real processes in a new user's home; each file a suite of its own).
 Results are read back from the runners' JUnit XML files, so a crash that writes no result
 counts as a failure. Exit status is 0 only if everything passed and at least one test ran.
 
-Usage: run_tests.py [--only SUBSTRING]   (run the suites whose name contains SUBSTRING)
+The gtests, rostests and the pytest suite run --jobs at a time (default: one per core): each
+rostest has its own roscore on a free port and most of a simulation test's time is waiting, so
+two at once on two cores take about 0.75 of the time. The walkthroughs run last, one by one and
+alone: they use the default master port and type the tutorials' `killall roscore` and `killall
+gzserver`, and the simulator of every rostest is named gzserver too. Lines are printed as suites
+end.
+
+Usage: run_tests.py [--only SUBSTRING] [--jobs N]
 """
 import argparse
+import concurrent.futures
 import glob
 import os
 import subprocess
 import sys
+import threading
 import time
 import xml.etree.ElementTree as ET
 
@@ -22,6 +31,7 @@ from catkin_pkg.packages import find_packages
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RESULTS = os.path.join(ROOT, "test_results")
+PRINTING = threading.Lock()
 
 
 def junit_counts(path):
@@ -71,12 +81,14 @@ def run(name, cmd, xml_path, env=None, timeout=900):
     if code == "timeout":
         failed += 1
     status = "ok" if failed == 0 else "FAILED (log: %s)" % os.path.relpath(log_path, ROOT)
-    print("%-55s %3d passed, %d failed, %d skipped  %5.1fs  %s"
-          % (name, passed, failed, skipped, time.time() - start, status), flush=True)
+    report = "%-55s %3d passed, %d failed, %d skipped  %5.1fs  %s\n" % (
+        name, passed, failed, skipped, time.time() - start, status)
     if failed:
         with open(log_path) as log:
-            tail = log.readlines()[-40:]
-        sys.stdout.write("".join("    | " + line for line in tail))
+            report += "".join("    | " + line for line in log.readlines()[-40:])
+    with PRINTING:  # a suite's line and its log's tail together, whichever suites end meanwhile
+        sys.stdout.write(report)
+        sys.stdout.flush()
     return passed, failed, skipped
 
 
@@ -95,6 +107,8 @@ def stop_walkthrough_leftovers():
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--only", default="", help="run only suites whose name contains this")
+    parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1,
+                        help="suites run at once (default: the number of cores); walkthroughs always run alone")
     args = parser.parse_args()
     os.makedirs(RESULTS, exist_ok=True)
     suites = []
@@ -136,16 +150,25 @@ def main():
                            [sys.executable, "-m", "pytest", "-q", "-x", "-p", "no:cacheprovider", "--junitxml=" + xml,
                             walkthrough], xml))
 
-    totals = [0, 0, 0]
-    for name, cmd, xml in suites:
-        if args.only and args.only not in name:
-            continue
+    chosen = [suite for suite in suites if args.only in suite[0]]
+    for _, _, xml in chosen:
         for stale in glob.glob(os.path.join(os.path.dirname(xml), "*.xml")):
             os.remove(stale)
-        env = rostest_env if name.startswith("rostest") else None
-        for i, n in enumerate(run(name, cmd, xml, env=env)):
-            totals[i] += n
-        if name.startswith("walkthrough"):
+
+    def run_suite(suite):
+        name, cmd, xml = suite
+        return run(name, cmd, xml, env=rostest_env if name.startswith("rostest") else None)
+
+    totals = [0, 0, 0]
+    shared = [suite for suite in chosen if not suite[0].startswith("walkthrough")]
+    # The pytest suite is the longest: started first, it does not end the run alone.
+    shared.sort(key=lambda suite: not suite[0].startswith("pytest"))
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        for counts in pool.map(run_suite, shared):
+            totals = [t + n for t, n in zip(totals, counts)]
+    for suite in chosen:
+        if suite[0].startswith("walkthrough"):
+            totals = [t + n for t, n in zip(totals, run_suite(suite))]
             stop_walkthrough_leftovers()
     print()
     print("%d passed, %d failed, %d skipped" % tuple(totals))
