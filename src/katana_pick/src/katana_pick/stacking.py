@@ -13,12 +13,13 @@ All positions are in katana_base_link, whose z = 0 is the surface the arm and th
 """
 import math
 from dataclasses import dataclass
-from typing import List, Sequence, Tuple, Union
+from typing import List, Optional, Sequence, Tuple, Union
 
 
 @dataclass(frozen=True)
 class StackingOptions:
     can_height: float = 0.12          # m, the tutorial's cans
+    can_radius: float = 0.033
     # Tool frame heights above a can's bottom to grasp it at, in order of preference: halfway up
     # first; higher up brings cans nearer the base within reach.
     grasp_heights: Tuple[float, ...] = (0.06, 0.08, 0.10)
@@ -37,6 +38,15 @@ class StackingOptions:
     min_pitch: float = -0.84          # steeper, the finger hinges (0.057 m behind the tool frame,
     max_pitch: float = 0.3            # 0.03 m off its axis) would come down onto the can's rim
     pitch_step: float = 0.05
+    # When no grasp above makes today's moves, every grasp height from min_grasp_height up and
+    # lower carries (clearance.py checks what they pass over) are tried: the arm's whole reach.
+    min_grasp_height: float = 0.04    # the fingertips stay above the table at min_pitch
+    grasp_height_step: float = 0.01
+    carry_step: float = 0.02          # m between the carry heights tried
+    # The open fingers as clearance.py models them: their tips hang at most 0.023 m + the
+    # finger's half width below the tool frame, and open they span 0.08 m.
+    fingers_drop: float = 0.03
+    fingers_radius: float = 0.04
 
 
 @dataclass(frozen=True)
@@ -105,9 +115,18 @@ def carry_height(level: int, grasp_height: float, options: StackingOptions) -> f
 
 
 def can_steps(can: Tuple[float, float], tower: Tuple[float, float], level: int, grasp_height: float,
-              pitch: float, options: StackingOptions = StackingOptions()) -> List[Step]:
-    """The steps that take the can standing at `can` to the top of the tower (`level` cans high)
-    standing at `tower`, grasped grasp_height above its bottom with the gripper at `pitch`."""
+              pitch: float, options: StackingOptions = StackingOptions(),
+              approach_height: Optional[float] = None,
+              carry_heights: Optional[Tuple[float, float]] = None) -> List[Step]:
+    """The steps that take the can standing at `can` to the top of the tower (`level` cans high;
+    0: onto the table) standing at `tower`, grasped grasp_height above its bottom with the
+    gripper at `pitch`.
+
+    The moves through the air go high enough to clear every can and the tower (carry_height)
+    unless given lower: approach_height, the tool's height above the approach point before it
+    comes down to it; carry_heights, the tool's height over the can after lifting it and over the
+    tower before coming down onto it (at least the lift's and the place's; one straight joint-space
+    move between them). Lower ones reach farther; clearance.py says whether they clear."""
     o = options
     x, y = can
     tx, ty = tower
@@ -117,20 +136,38 @@ def can_steps(can: Tuple[float, float], tower: Tuple[float, float], level: int, 
     place_z = level * o.can_height + o.place_gap + grasp_height
     place = ToolPose(tx, ty, place_z, pitch)
     away = _on_line(tx, ty, o.retreat_distance, place_z, pitch)
+    above_can, above_tower = carry_heights if carry_heights is not None else (high, high)
+    lifted_z = grasp_height + o.lift
+    carry = (ToolPose(x, y, max(above_can, lifted_z), pitch), ToolPose(tx, ty, max(above_tower, place_z + o.lift), pitch))
+    if carry[1].z > place_z + o.lift:
+        carry += (ToolPose(tx, ty, place_z + o.lift, pitch),)
     return [
         Grip('open before the approach', o.open_position, hold=False),
-        Move('over to the approach point', (ToolPose(before.x, before.y, high, pitch),
+        Move('over to the approach point', (ToolPose(before.x, before.y, high if approach_height is None
+                                                     else max(approach_height, grasp_height), pitch),
                                              before), line=False),
         Move('in along the line from the base', (grasp,)),
         Grip('close on the can', o.close_position, hold=True),
-        Move('lift off', (ToolPose(x, y, grasp_height + o.lift, pitch),)),
-        Move('carry over the tower', (ToolPose(x, y, high, pitch), ToolPose(tx, ty, high, pitch),
-                                      ToolPose(tx, ty, place_z + o.lift, pitch)), line=False),
+        Move('lift off', (ToolPose(x, y, lifted_z, pitch),)),
+        Move('carry over the tower', carry, line=False),
         Move('lower onto the tower', (place,)),
         Grip('let go', o.open_position, hold=False),
         Move('back away towards the base', (away,)),
         Move('rise', (ToolPose(away.x, away.y, place_z + 2 * o.lift, pitch),)),
     ]
+
+
+def grasp_heights_all(options: StackingOptions) -> List[float]:
+    """Every grasp height from options.min_grasp_height to the highest of options.grasp_heights."""
+    top = max(options.grasp_heights)
+    n = int(round((top - options.min_grasp_height) / options.grasp_height_step))
+    return [round(options.min_grasp_height + k * options.grasp_height_step, 6) for k in range(n + 1)]
+
+
+def heights_down(high: float, low: float, step: float) -> List[float]:
+    """high, then every `step` lower down to low (included)."""
+    n = max(0, int(math.ceil((high - low) / step - 1e-9)))
+    return [max(high - k * step, low) for k in range(n + 1)]
 
 
 def pitches(options: StackingOptions) -> List[float]:

@@ -13,7 +13,9 @@ from typing import List, Sequence, Tuple
 
 from katana_pick import katana_ik
 from katana_pick.arm_geometry import KatanaGeometry
-from katana_pick.stacking import Move, StackingOptions, Step, ToolPose, can_steps, interpolate, pitches
+from katana_pick.clearance import Held, path_conflict, tower_and_cans
+from katana_pick.stacking import (Move, StackingOptions, Step, ToolPose, can_steps, carry_height, grasp_heights_all,
+                                  heights_down, interpolate, pitches)
 
 
 @dataclass(frozen=True)
@@ -84,26 +86,80 @@ def plan_moves(geometry: KatanaGeometry, q_start: Sequence[float], moves: Sequen
 
 def plan_can(geometry: KatanaGeometry, q_start: Sequence[float], can, tower, level: int,
              options: StackingOptions = StackingOptions(), roll: float = 0.0,
-             timing: TimingOptions = TimingOptions()) -> Tuple[List[Step], List[JointPath]]:
-    """The steps for one can (stacking.can_steps) and the joint paths of their moves, at the first
-    of options.grasp_heights for which some pitch makes every move reachable, and at the middle
-    one of those pitches (the most room to the joint limits); PlanError if there is none."""
+             timing: TimingOptions = TimingOptions(),
+             standing: Sequence[Tuple[float, float]] = ()) -> Tuple[List[Step], List[JointPath]]:
+    """The steps for one can (stacking.can_steps) and the joint paths of their moves; PlanError if
+    no grasp makes them.
+
+    First as the tutorial's moves go, high over everything: at the first of options.grasp_heights
+    for which some pitch makes every move reachable, at the middle one of those pitches (the most
+    room to the joint limits). Where that finds nothing (far or high places, near cans), over the
+    arm's whole reach: every grasp height from options.min_grasp_height, the approach and the
+    carry as high as the arm reaches, each of those moves through the air checked (clearance.py)
+    against the tower and the cans in `standing`, those on the table besides this one and the
+    tower's."""
+    obstacles = tower_and_cans(tower, level, standing, options.can_height, options.can_radius)
     why_not = None
-    for height in options.grasp_heights:
-        feasible = []
-        for pitch in sorted(pitches(options)):
-            steps = can_steps(can, tower, level, height, pitch, options)
+    for whole_reach in (False, True):
+        for height in grasp_heights_all(options) if whole_reach else options.grasp_heights:
+            feasible = []
+            for pitch in sorted(pitches(options)):
+                try:
+                    if whole_reach:
+                        feasible.append(_plan_lower(geometry, q_start, can, tower, level, height, pitch, obstacles,
+                                                    options, roll, timing))
+                    else:
+                        steps = can_steps(can, tower, level, height, pitch, options)
+                        feasible.append((steps, plan_moves(geometry, q_start, [s for s in steps if isinstance(s, Move)],
+                                                           roll, timing)))
+                except PlanError as e:
+                    if why_not is None or pitch == 0.0 and height == options.grasp_heights[0] and not whole_reach:
+                        why_not = 'grasped %.2f m up with the gripper level: %s' % (height, e)
+            if feasible:
+                return feasible[len(feasible) // 2]
+    raise PlanError('no grasp %.2f-%.2f m up with a pitch in [%.2f, %.2f] rad reaches it (%s)' % (
+        options.min_grasp_height, max(options.grasp_heights), options.min_pitch, options.max_pitch, why_not))
+
+
+def _plan_lower(geometry, q_start, can, tower, level, height, pitch, obstacles, options, roll, timing):
+    """plan_can's second search for one grasp: the approach and the carry at the highest heights
+    (carry_step apart) that the arm reaches and that clear the obstacles."""
+    o = options
+    high = carry_height(level, height, o)
+
+    def moves(steps):
+        return [s for s in steps if isinstance(s, Move)]
+
+    def first_clear(variants, q, held, index):
+        """The first (heights, steps) whose move `index` is reachable from q and clears the
+        obstacles, with that move's path."""
+        why = None
+        for heights, steps in variants:
+            move = moves(steps)[index]
             try:
-                paths = plan_moves(geometry, q_start, [s for s in steps if isinstance(s, Move)], roll, timing)
+                path = joint_path(geometry, q, move, roll, timing)
             except PlanError as e:
-                if why_not is None or pitch == 0.0 and height == options.grasp_heights[0]:
-                    why_not = 'grasped %.2f m up with the gripper level: %s' % (height, e)
+                why = why or e
                 continue
-            feasible.append((steps, paths))
-        if feasible:
-            return feasible[len(feasible) // 2]
-    raise PlanError('no grasp %s m up with a pitch in [%.2f, %.2f] rad reaches it (%s)' % (
-        '/'.join('%.2f' % h for h in options.grasp_heights), options.min_pitch, options.max_pitch, why_not))
+            conflict = path_conflict(geometry, (tuple(q),) + path.positions, held, obstacles)
+            if conflict is None:
+                return heights, steps, path
+            why = PlanError('%s: %s' % (move.what, conflict))
+        raise why
+
+    approach_height, steps, approach = first_clear(
+        ((h, can_steps(can, tower, level, height, pitch, o, approach_height=h))
+         for h in heights_down(high, height, o.carry_step)),
+        q_start, Held(o.fingers_drop, o.fingers_radius), 0)
+    taken = plan_moves(geometry, approach.positions[-1], moves(steps)[1:3], roll, timing)
+    over_tower = level * o.can_height + o.place_gap + height + o.lift
+    _, steps, carry = first_clear(
+        ((None, can_steps(can, tower, level, height, pitch, o, approach_height, (above_can, above_tower)))
+         for above_tower in heights_down(high, over_tower, o.carry_step)
+         for above_can in heights_down(high, height + o.lift, o.carry_step)),
+        taken[-1].positions[-1], Held(height, o.can_radius), 3)
+    rest = plan_moves(geometry, carry.positions[-1], moves(steps)[4:], roll, timing)
+    return steps, [approach] + taken + [carry] + rest
 
 
 def back_off(geometry: KatanaGeometry, q_now: Sequence[float], q_home: Sequence[float],

@@ -1,0 +1,44 @@
+"""Which can the others are stacked on, and in which order, so that the most cans end in the tower.
+
+The tower's level rises as cans go on it, and the arm's reach shrinks with it (docs/KATANA.md,
+"The arm's reach"): which can goes to which level matters as much as where the tower stands. Every
+can's spot is tried as the tower and every order of the others, each scored by how many cans go
+on: can i goes to level L (the cans already on the tower, plus one) if fits(i, tower, L), and a
+can that does not fit is skipped, the tower growing only by those that do (as stack_cans runs a
+plan). Ties keep the tutorial's choice: the middle can by bearing as the tower (stacking.
+choose_tower), the nearest cans first (stacking.pick_order).
+"""
+import itertools
+from typing import Callable, List, Sequence, Tuple
+
+from katana_pick.stacking import choose_tower, pick_order
+
+# Above this many cans only the tutorial's order is scored for each tower: 8 cans would be 40320
+# orders a tower.
+MAX_CANS_FOR_EVERY_ORDER = 7
+
+
+def placed(order: Sequence[int], tower: int, fits: Callable[[int, int, int], bool]) -> int:
+    """How many of the cans in `order` go onto the tower, each to the level above the last that did."""
+    level = 0
+    for i in order:
+        if fits(i, tower, level + 1):
+            level += 1
+    return level
+
+
+def choose_stack(cans: Sequence[Tuple[float, float]], fits: Callable[[int, int, int], bool]) -> Tuple[int, List[int]]:
+    """The tower (an index into cans) and the order the others go to it in. fits(i, tower, level):
+    whether can i can be set `level` cans high on the tower standing at can `tower`'s spot."""
+    preferred = choose_tower(cans)
+    best = None
+    for tower in [preferred] + [t for t in range(len(cans)) if t != preferred]:
+        nearest_first = pick_order(cans, tower)
+        orders = itertools.permutations(nearest_first) if len(cans) <= MAX_CANS_FOR_EVERY_ORDER else [nearest_first]
+        for order in orders:
+            count = placed(order, tower, fits)
+            if best is None or count > best[0]:
+                best = (count, tower, list(order))
+            if count == len(cans) - 1:
+                return tower, list(order)
+    return best[1], best[2]
