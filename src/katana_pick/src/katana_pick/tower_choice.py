@@ -8,10 +8,13 @@ can that does not fit is skipped, the tower growing only by those that do (as st
 plan). Ties keep the tutorial's choice: the middle can by bearing as the tower (stacking.
 choose_tower), the nearest cans first (stacking.pick_order).
 """
+import functools
 import itertools
 from typing import Callable, List, Sequence, Tuple
 
-from katana_pick.stacking import choose_tower, pick_order
+from katana_pick.arm_geometry import KatanaGeometry
+from katana_pick.stacking import StackingOptions, choose_tower, pick_order
+from katana_pick.trajectories import PlanError, TimingOptions, plan_can
 
 # Above this many cans only the tutorial's order is scored for each tower: 8 cans would be 40320
 # orders a tower.
@@ -42,3 +45,20 @@ def choose_stack(cans: Sequence[Tuple[float, float]], fits: Callable[[int, int, 
             if count == len(cans) - 1:
                 return tower, list(order)
     return best[1], best[2]
+
+
+def fits_by_plan(geometry: KatanaGeometry, q_start: Sequence[float], cans: Sequence[Tuple[float, float]],
+                 also_standing: Sequence[Tuple[float, float]] = (), options: StackingOptions = StackingOptions(),
+                 timing: TimingOptions = TimingOptions()) -> Callable[[int, int, int], bool]:
+    """choose_stack's fits, remembered: whether plan_can finds a plan from q_start for cans[i] onto
+    a tower `level` high at cans[tower], past every other can counted as standing (those of cans
+    and also_standing, cans the arm does not reach)."""
+    @functools.lru_cache(maxsize=None)
+    def fits(i, tower, level):
+        standing = [c for k, c in enumerate(cans) if k not in (i, tower)] + list(also_standing)
+        try:
+            plan_can(geometry, q_start, cans[i], cans[tower], level, options, timing=timing, standing=standing)
+            return True
+        except PlanError:
+            return False
+    return fits

@@ -1,7 +1,6 @@
 """Planning over the arm's reach (issue 38, item 2): the tower and order that put the most cans
 on it (tower_choice), lower carries that reach a fourth level (trajectories.plan_can's second
 search), and the clearance check (clearance.py) that keeps a carried can off the tower."""
-import functools
 import math
 import os
 import sys
@@ -13,7 +12,7 @@ from katana_pick import katana_ik, reach  # noqa: E402
 from katana_pick.arm_geometry import KatanaGeometry, within_limits  # noqa: E402
 from katana_pick.clearance import Held, Obstacle, path_conflict  # noqa: E402
 from katana_pick.stacking import Move, StackingOptions, choose_tower, pick_order  # noqa: E402
-from katana_pick.tower_choice import choose_stack, placed  # noqa: E402
+from katana_pick.tower_choice import choose_stack, fits_by_plan, placed  # noqa: E402
 from katana_pick.trajectories import PlanError, plan_can  # noqa: E402
 
 G = KatanaGeometry()
@@ -92,14 +91,7 @@ def test_four_cans_of_the_old_band_make_a_four_high_tower():
     # only two of three on these seeds, the chosen ones all three.
     for seed in (1, 3, 7):
         cans = random_layout(4, seed)
-
-        @functools.lru_cache(None)
-        def fits(i, t, level):
-            try:
-                plan_can(G, START, cans[i], cans[t], level, standing=[c for k, c in enumerate(cans) if k not in (i, t)])
-                return True
-            except PlanError:
-                return False
+        fits = fits_by_plan(G, START, cans)
         tower, order = choose_stack(cans, fits)
         assert placed(order, tower, fits) == 3, seed
         tutorial = choose_tower(cans)
