@@ -52,7 +52,10 @@ class StudioJoints(unittest.TestCase):
         cls.driver = open_browser()
         open_studio(cls.driver, studio_url())
         wait_for(cls.driver, "return window.studio.world.visualObjects() > 0", 15.0, "the scene drawn")
-        # Select the model as a user would: its name in the Models tree.
+        # Select the model as a user would: its name in the Models tree, which the page fills from
+        # the world's model list (on a busy machine after the ground plane is drawn).
+        wait_for(cls.driver, "return document.querySelector(\"#models-tree li[data-model='%s'] .label\")" % MODEL,
+                 15.0, "simple_model in the Models tree")
         cls.driver.find_element(By.CSS_SELECTOR, "#models-tree li[data-model='%s'] .label" % MODEL).click()
         wait_for(cls.driver, "return document.querySelector('#joints-force input[data-joint=\"%s\"]')" % JOINT, 10.0,
                  "the Joints panel lists joint_1")
