@@ -5,7 +5,7 @@
 namespace bullet_sim {
 namespace {
 // A browser redraws at 60 Hz; more would only cost the loop and the connection.
-const ros::WallDuration kPeriod(1.0 / 60.0);
+const ros::WallDuration kPoseInfoPeriod(1.0 / 60.0);
 }  // namespace
 
 PoseInfo::PoseInfo(const PhysicsWorld& world) : world_(world) {
@@ -16,7 +16,7 @@ PoseInfo::PoseInfo(const PhysicsWorld& world) : world_(world) {
 void PoseInfo::publish() {
   if (!publisher_.hasSubscribers()) return;  // the common case costs one comparison per step
   const ros::WallTime now = ros::WallTime::now();
-  if (now - last_ < kPeriod) return;
+  if (now - last_ < kPoseInfoPeriod) return;
   last_ = now;
   publisher_.publish(linkStates(world_));
 }

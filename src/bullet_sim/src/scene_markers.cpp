@@ -4,7 +4,7 @@
 
 namespace bullet_sim {
 namespace {
-const ros::WallDuration kPeriod(0.1);
+const ros::WallDuration kMarkerPeriod(0.1);
 }  // namespace
 
 SceneMarkers::SceneMarkers(PhysicsWorld& world) : world_(world) {
@@ -69,7 +69,7 @@ void appendModelMarkers(const PhysicsModel& model, const ros::Time& stamp, visua
 void SceneMarkers::publish(bool force) {
   if (!publisher_.hasSubscribers()) return;
   const ros::WallTime now = ros::WallTime::now();
-  if (!force && now - last_ < kPeriod) return;
+  if (!force && now - last_ < kMarkerPeriod) return;
   last_ = now;
   visualization_msgs::MarkerArray markers;
   visualization_msgs::Marker clear;  // models may have been deleted since the last message

@@ -13,7 +13,7 @@
 namespace hector_style_mapping {
 namespace {
 
-constexpr double kDegree = M_PI / 180.0;
+using testing::kDegree;
 
 struct Scene {
   LikelihoodField field;

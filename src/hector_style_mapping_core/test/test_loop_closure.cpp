@@ -14,7 +14,7 @@
 namespace hector_style_mapping {
 namespace {
 
-constexpr double kDegree = M_PI / 180.0;
+using testing::kDegree;
 
 // A ring corridor 2 m wide round a 6 x 4 m block, with pillars and notches so that no stretch is featureless.
 testing::SyntheticWorld ring() {

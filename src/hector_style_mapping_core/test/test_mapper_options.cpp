@@ -8,11 +8,12 @@
 #include "hector_style_mapping_core/mapper_options.h"
 #include "hector_style_mapping_core/multi_resolution_map.h"
 #include "hector_style_mapping_core/slam_processor.h"
+#include "hector_style_mapping_core/testing/mentions.h"
 
 namespace hector_style_mapping {
 namespace {
 
-bool mentions(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using testing::mentions;
 
 TEST(MapperOptions, DefaultsAreHectorMappingsParameterDefaults) {
   const MapperOptions options;

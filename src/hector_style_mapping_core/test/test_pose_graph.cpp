@@ -11,11 +11,12 @@
 #include <vector>
 
 #include "hector_style_mapping_core/pose_graph.h"
+#include "hector_style_mapping_core/testing/mentions.h"
 
 namespace hector_style_mapping {
 namespace {
 
-bool mentions(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using testing::mentions;
 
 Eigen::Matrix3d informationOf(double sigma_xy, double sigma_theta) {
   return Eigen::Vector3d(1.0 / (sigma_xy * sigma_xy), 1.0 / (sigma_xy * sigma_xy), 1.0 / (sigma_theta * sigma_theta))

@@ -446,8 +446,6 @@ TEST(Tolerance, GoalOverridesReplaceDisableOrKeepTheDefaults) {
   EXPECT_EQ(applyGoalTimeOverride(-1.0, 0.6), 0.0);
 }
 
-namespace {
-
 // One joint "j" moving 0 -> 1 over [0, 1] as goal 1.
 struct MonitorFixture : ::testing::Test {
   void SetUp() override {
@@ -470,8 +468,6 @@ struct MonitorFixture : ::testing::Test {
   Tolerances tolerances;
   GoalMonitor monitor;
 };
-
-}  // namespace
 
 TEST_F(MonitorFixture, PathToleranceViolationAbortsNamingTheJoint) {
   EXPECT_FALSE(at(0.2, {0.05, 0.3, 0.0}).done);

@@ -1,21 +1,17 @@
 #include "pioneer_ros/body_velocity_controller.h"
 
+#include "numbers.h"
+
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 namespace pioneer_ros {
+
+using numbers::clampTo;
+using numbers::number;
+
 namespace {
-
-double clampTo(double value, double low, double high) { return std::max(low, std::min(high, value)); }
-
-std::string number(double value) {
-  if (std::isnan(value)) return "nan";  // not glibc's "-nan" for a NaN with its sign bit set
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
 
 std::string validate(const AxisConfig& axis, const std::string& name) {
   const std::string gains = "controller_gains/body/" + name + "/";

@@ -1,24 +1,16 @@
 #include "pioneer_ros/pid.h"
 
+#include "numbers.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
 namespace pioneer_ros {
-namespace {
 
-// Not std::clamp: its behaviour is undefined for low > high and for NaN bounds.
-double clampTo(double value, double low, double high) { return std::max(low, std::min(high, value)); }
-
-std::string number(double value) {
-  if (std::isnan(value)) return "nan";  // not glibc's "-nan" for a NaN with its sign bit set
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
-}  // namespace
+using numbers::clampTo;
+using numbers::number;
 
 std::string validate(const PidGains& gains) {
   const std::pair<const char*, double> terms[] = {{"p", gains.p}, {"i", gains.i}, {"d", gains.d}};

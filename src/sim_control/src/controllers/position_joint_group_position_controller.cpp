@@ -6,7 +6,7 @@
 
 namespace sim_control {
 namespace {
-using JointGroupPositionController = controllers::ForwardJointGroupCommandController<InterfaceType::Position>;
+using PositionJointGroupPositionController = controllers::ForwardJointGroupCommandController<InterfaceType::Position>;
 }  // namespace
-SIM_CONTROL_REGISTER_CONTROLLER("position_controllers/JointGroupPositionController", JointGroupPositionController)
+SIM_CONTROL_REGISTER_CONTROLLER("position_controllers/JointGroupPositionController", PositionJointGroupPositionController)
 }  // namespace sim_control

@@ -6,7 +6,7 @@
 
 namespace sim_control {
 namespace {
-using JointPositionController = controllers::ForwardCommandController<InterfaceType::Position>;
+using PositionJointPositionController = controllers::ForwardCommandController<InterfaceType::Position>;
 }  // namespace
-SIM_CONTROL_REGISTER_CONTROLLER("position_controllers/JointPositionController", JointPositionController)
+SIM_CONTROL_REGISTER_CONTROLLER("position_controllers/JointPositionController", PositionJointPositionController)
 }  // namespace sim_control
