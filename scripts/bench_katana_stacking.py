@@ -1,24 +1,33 @@
 #!/usr/bin/python3
-"""The Katana tutorial's pick-and-stack over seeded random layouts (issue 13): how often the three
-cans end up as one standing tower, why not when they don't, how long a can takes, and how far the
+"""The Katana tutorial's pick-and-stack over seeded random layouts (issues 13 and 38): how many
+cans end up in one standing tower, why not when they don't, how long a can takes, and how far the
 detected cans are from where they stand.
 
-  bench_katana_stacking.py [--layouts N] [--first-seed S]      (after . scripts/env.sh)
+  bench_katana_stacking.py [--layouts N] [--first-seed S] [--cans C] [--region band|reach]
                            [--out results.jsonl] [--address HOST:PORT] [--cpus-per-run C]
+                           (after . scripts/env.sh)
 
-Each layout is one run of `roslaunch katana_pick stack_cans.launch cans_seed:=SEED` (a fresh
-simulator: three cans drawn by katana_arm_gazebo's can_layouts.random_layout), the layouts one
-sim_batch batch over the seeds (docs/BATCH.md: each run on a ROS master of its own; one at a time
-on this machine by default, or on a Ray cluster with --address). This script's --check watches
+Each layout is one run of `roslaunch katana_pick stack_cans.launch cans_seed:=SEED cans_count:=C
+cans_range:=MIN,MAX` (a fresh simulator: C cans drawn by katana_arm_gazebo's
+can_layouts.random_layout), the layouts one sim_batch batch over the seeds (docs/BATCH.md: each
+run on a ROS master of its own; one at a time on this machine by default, or on a Ray cluster with
+--address). --region band draws between 0.34 and 0.42 m from the base (can_layouts' defaults, the
+issue 13 benchmark); --region reach over the whole range at which the arm takes a can, from
+katana_pick.reach (the URDF's dimensions and limits): 0.315-0.46 m. This script's --check watches
 each run: once stack_cans has published the cans it found, the simulator runs as fast as it goes
 until stack_cans exits. Then, from /gazebo/get_model_state:
 
-  - success: the three cans stand one on another on the tower's can (each level within 1 cm of
-    its height, within 2 cm of the tower's axis, tilted less than 10 degrees), still so 3 s later;
-  - otherwise the cause, the first that applies: unreachable (the planner refused a can),
-    no attach (a moved can never attached to the gripper), no release (attached and never let go),
-    tip-over (a can lies tilted more than 20 degrees), slip (a can was carried and let go, but is
-    not on the tower); before those, not detected (stack_cans found fewer than the three cans);
+  - stacked: the cans of the highest standing column (each level within 1 cm of its height,
+    within 2 cm of the bottom can's axis, tilted less than 10 degrees, still so 3 s later);
+    against stackable, the most cans katana_pick.reach says one tower can take (every can's
+    spot as the tower and every order; the reach of each can, not the clearance between them);
+  - success: every can in the tower; otherwise the cause, the first that applies: unreachable
+    (the planner refused a can), no attach (a moved can never attached to the gripper), no
+    release (attached and never let go), tip-over (a can lies tilted more than 20 degrees), slip
+    (a can was carried and let go, but is not on the tower); before those, not detected
+    (stack_cans found fewer cans than stand);
+  - knocked over: cans tilted more than 20 degrees; unreported: cans left out of the tower that
+    stack_cans did not report as skipped, with the reason;
   - seconds per moved can, sim and wall, from the cans' detection to stack_cans' exit;
   - the detection error: each can found against where it was spawned.
 """
@@ -44,14 +53,62 @@ def tilt(q):
     return math.degrees(2 * math.asin(min(1.0, math.hypot(q.x, q.y))))
 
 
-def check(seed):
+def layout_rules(region):
+    """The random layouts' rules: the issue 13 band, or over the arm's whole reach."""
+    from katana_arm_gazebo.can_layouts import LayoutRules
+    if region == 'band':
+        return LayoutRules()
+    from katana_pick.arm_geometry import KatanaGeometry
+    from katana_pick.reach import reach_map
+    radii = [round(0.25 + 0.005 * i, 3) for i in range(51)]  # 0.25-0.50 m: past both ends of the reach
+    near, far = reach_map(KatanaGeometry(), radii, max_level=0).take_range()
+    return LayoutRules(min_range=near, max_range=far)
+
+
+def stackable(layout):
+    """The most cans of the layout one tower can hold by the arm's reach (katana_pick.reach)."""
+    from katana_pick.arm_geometry import KatanaGeometry
+    from katana_pick.reach import reach_map
+    from katana_pick.tower_choice import choose_stack, placed
+    ranges = [round(math.hypot(x, y), 6) for x, y in layout]
+    reach = reach_map(KatanaGeometry(), sorted(set(ranges)), max_level=len(layout) - 1)
+
+    def fits(i, tower, level):
+        return bool(reach.stackable(ranges[i], ranges[tower], level))
+    tower, order = choose_stack(layout, fits)
+    return 1 + placed(order, tower, fits)
+
+
+def tallest_column(poses):
+    """The cans (names, bottom first) of the highest column standing on the table."""
+    def upright(n):
+        return tilt(poses[n].orientation) < 10.0
+    best = []
+    for bottom in poses:
+        b = poses[bottom].position
+        if not (upright(bottom) and abs(b.z - TABLE) < 0.01):
+            continue
+        column = [bottom]
+        while True:
+            level = len(column)
+            above = [n for n in poses if n not in column and upright(n)
+                     and abs(poses[n].position.z - (TABLE + level * CAN_HEIGHT)) < 0.01
+                     and math.hypot(poses[n].position.x - b.x, poses[n].position.y - b.y) < 0.02]
+            if not above:
+                break
+            column.append(above[0])
+        if len(column) > len(best):
+            best = column
+    return best
+
+
+def check(seed, count, region):
     """One run's check: stack_cans.launch is up on this run's master (ROS_MASTER_URI); prints one
     JSON line with what happened."""
     from katana_arm_gazebo.can_layouts import random_layout
-    from katana_pick.stacking import choose_tower
-    layout = random_layout(3, seed)
-    names = ['can_%d' % (i + 1) for i in range(3)]
-    tower = names[choose_tower(layout)]
+    layout = random_layout(count, seed, layout_rules(region))
+    names = ['can_%d' % (i + 1) for i in range(count)]
+    most = stackable(layout)
 
     import rosnode
     import rospy
@@ -77,7 +134,7 @@ def check(seed):
     get_state = rospy.ServiceProxy('/gazebo/get_model_state', GetModelState)
     set_real_time_factor(0.0)
     sim0, wall0 = world().sim_time, time.monotonic()
-    bench_batch.wait_until(lambda: '/stack_cans' not in rosnode.get_node_names(), 600, 'end of stack_cans')
+    bench_batch.wait_until(lambda: '/stack_cans' not in rosnode.get_node_names(), 900, 'end of stack_cans')
     sim_s, wall_s = world().sim_time - sim0, time.monotonic() - wall0
 
     def poses():
@@ -88,23 +145,21 @@ def check(seed):
     while world().sim_time < end:
         time.sleep(0.05)
     after = poses()
-
-    base = after[tower].position
-    stacked = sorted(names, key=lambda n: after[n].position.z)
-    standing = all(
-        abs(after[n].position.z - (TABLE + k * CAN_HEIGHT)) < 0.01
-        and math.hypot(after[n].position.x - base.x, after[n].position.y - base.y) < 0.02
-        and tilt(after[n].orientation) < 10.0
-        and math.dist((after[n].position.x, after[n].position.y, after[n].position.z),
-                      (before[n].position.x, before[n].position.y, before[n].position.z)) < 0.005
-        for k, n in enumerate(stacked))
+    # The column as it stands 3 s on, up to its first can that was still moving.
+    still = [math.dist((after[n].position.x, after[n].position.y, after[n].position.z),
+                       (before[n].position.x, before[n].position.y, before[n].position.z)) < 0.005
+             for n in tallest_column(after)]
+    column = tallest_column(after)[:still.index(False) if False in still else len(still)]
 
     with lock:
         log = '\n'.join(said)
+    knocked = [n for n in names if tilt(after[n].orientation) > 20.0]
+    reported = len(re.findall(r'stack_cans: .*(?:unreachable, skipped|given up after|gone: .*skipped)', log))
+    success = len(column) == count
     cause = None
-    if not standing:
-        moved = [n for n in names if n != tower]
-        if len(detected[0].poses) < 3:
+    if not success:
+        moved = [n for n in names if n not in column[:1]]
+        if len(detected[0].poses) < count:
             cause = 'not detected'
         elif 'unreachable' in log:
             cause = 'unreachable'
@@ -112,61 +167,80 @@ def check(seed):
             cause = 'no attach'
         elif any((n, False) not in events for n in moved):
             cause = 'no release'
-        elif any(tilt(after[n].orientation) > 20.0 for n in names):
+        elif knocked:
             cause = 'tip-over'
         else:
             cause = 'slip'
     seen = [(p.position.x, p.position.y) for p in detected[0].poses]
     errors = [min(math.dist(s, c) for s in seen) for c in layout] if seen else []
-    errors_line = re.findall(r'stack_cans: .*(?:unreachable|nothing between|ended the move|did not).*', log)
-    print(json.dumps({'seed': seed, 'success': standing, 'cause': cause, 'sim_s': sim_s, 'wall_s': wall_s,
+    errors_line = re.findall(r'stack_cans: .*(?:unreachable|nothing between|ended the move|did not|given up).*', log)
+    print(json.dumps({'seed': seed, 'cans': count, 'region': region, 'layout': layout, 'success': success,
+                      'stacked': len(column), 'stackable': most, 'knocked': knocked,
+                      'unreported': max(0, count - len(column) - reported), 'cause': cause,
+                      'sim_s': sim_s, 'wall_s': wall_s, 'moved': max(0, len(column) - 1),
                       'found': len(seen), 'detection_errors': errors, 'events': events,
-                      'errors': errors_line[:3], 'sim_time': world().sim_time}), flush=True)
+                      'errors': errors_line[:4], 'sim_time': world().sim_time}), flush=True)
 
 
-def summarise(results, command):
+def summarise(results, count, command):
     n = len(results)
     ok = [r for r in results if r['success']]
     causes = {}
     for r in results:
         if not r['success']:
             causes[r['cause']] = causes.get(r['cause'], 0) + 1
-    per_can_sim = [r['sim_s'] / 2 for r in ok]
-    per_can_wall = [r['wall_s'] / 2 for r in ok]
+    per_can_sim = [r['sim_s'] / r['moved'] for r in results if r.get('moved')]
+    per_can_wall = [r['wall_s'] / r['moved'] for r in results if r.get('moved')]
     errors = [e for r in results for e in r['detection_errors']]
-    missed = sum(3 - min(r['found'], 3) for r in results)
+    missed = sum(count - min(r['found'], count) for r in results)
+    stacked = sum(min(r.get('stacked', 0), r.get('stackable', count)) for r in results)
+    most = sum(r.get('stackable', count) for r in results)
     mean = lambda v: sum(v) / len(v) if v else float('nan')  # noqa: E731
-    print('\n%d layouts of 3 cans: %d stacked (%.0f %%)' % (n, len(ok), 100.0 * len(ok) / n if n else 0))
+    print('\n%d layouts of %d cans: %d towers of all %d (%.0f %%)'
+          % (n, count, len(ok), count, 100.0 * len(ok) / n if n else 0))
+    print('cans in the tower against the most the reach allows: %d of %d (%.1f %%); layouts with a can knocked '
+          'over: %d; cans left out and not reported: %d'
+          % (stacked, most, 100.0 * stacked / most if most else 0, sum(1 for r in results if r.get('knocked')),
+             sum(r.get('unreported', 0) for r in results)))
     for cause in ('not detected', 'unreachable', 'no attach', 'no release', 'tip-over', 'slip', 'run failed'):
         print('  %-12s %d' % (cause, causes.get(cause, 0)))
-    print('seconds per can (successful layouts, 2 cans moved each): sim %.1f mean (%.1f-%.1f), wall %.1f mean'
+    print('seconds per moved can: sim %.1f mean (%.1f-%.1f), wall %.1f mean'
           % (mean(per_can_sim), min(per_can_sim, default=float('nan')), max(per_can_sim, default=float('nan')),
              mean(per_can_wall)))
     print('detection: %d of %d cans found; error mean %.1f mm, max %.1f mm'
-          % (3 * n - missed, 3 * n, 1e3 * mean(errors), 1e3 * max(errors, default=float('nan'))))
+          % (count * n - missed, count * n, 1e3 * mean(errors), 1e3 * max(errors, default=float('nan'))))
     for r in results:
         if not r['success']:
-            print('  seed %d: %s %s' % (r['seed'], r['cause'], '; '.join(r['errors'])))
+            print('  seed %d: %s, %d of %d stacked (reach: %d) %s'
+                  % (r['seed'], r['cause'], r.get('stacked', 0), count, r.get('stackable', count),
+                     '; '.join(r['errors'])))
     print('command: %s' % command)
 
 
-def scenario(layouts, first_seed):
-    return {'name': 'katana_stacking', 'launch': 'katana_pick stack_cans.launch', 'args': {'cans_seed': '${seed}'},
-            'check': bench_batch.check_command(__file__, '--check', '${seed}'),
-            'seeds': list(range(first_seed, first_seed + layouts)), 'time_limit': 900}
+def scenario(args):
+    rules = layout_rules(args.region)
+    return {'name': 'katana_stacking', 'launch': 'katana_pick stack_cans.launch',
+            'args': {'cans_seed': '${seed}', 'cans_count': str(args.cans),
+                     'cans_range': '%g,%g' % (rules.min_range, rules.max_range)},
+            'check': bench_batch.check_command(__file__, '--check', '${seed}', '--cans', args.cans,
+                                               '--region', args.region),
+            'seeds': list(range(args.first_seed, args.first_seed + args.layouts)), 'time_limit': 900}
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument('--layouts', type=int, default=50)
     parser.add_argument('--first-seed', type=int, default=1)
+    parser.add_argument('--cans', type=int, default=3)
+    parser.add_argument('--region', choices=('band', 'reach'), default='band')
     bench_batch.add_arguments(parser)
     parser.add_argument('--check', type=int, metavar='SEED', help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.check is not None:
-        return check(args.check)
-    command = 'scripts/bench_katana_stacking.py --layouts %d --first-seed %d' % (args.layouts, args.first_seed)
-    records, _ = bench_batch.run(scenario(args.layouts, args.first_seed), args, 2, 'bench_katana_stacking')
+        return check(args.check, args.cans, args.region)
+    command = 'scripts/bench_katana_stacking.py --layouts %d --first-seed %d --cans %d --region %s' % (
+        args.layouts, args.first_seed, args.cans, args.region)
+    records, _ = bench_batch.run(scenario(args), args, 2, 'bench_katana_stacking')
     results = []
     for record in records:
         r = bench_batch.result_of(record)
@@ -175,10 +249,11 @@ def main():
             results.append({'seed': record.get('seed'), 'success': False, 'cause': 'run failed', 'sim_s': 0,
                             'wall_s': 0, 'found': 0, 'detection_errors': [], 'errors': []})
             continue
-        print('seed %3d: %s  sim %.1f s, wall %.1f s, %d cans found' % (
-            r['seed'], 'stacked' if r['success'] else r['cause'], r['sim_s'], r['wall_s'], r['found']), flush=True)
+        print('seed %3d: %s  %d of %d stacked (reach: %d), sim %.1f s, wall %.1f s, %d cans found' % (
+            r['seed'], 'stacked' if r['success'] else r['cause'], r['stacked'], args.cans, r['stackable'],
+            r['sim_s'], r['wall_s'], r['found']), flush=True)
         results.append(r)
-    summarise(results, command)
+    summarise(results, args.cans, command)
     return 0
 
 

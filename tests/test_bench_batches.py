@@ -2,6 +2,7 @@
 bench_navigation.py) are sim_batch batch files: each parses, names one run per start, layout or
 seed, and fills the launch arguments and the check's command line for that run. Running them is
 the benchmarks' job (minutes each); this checks what they hand to sim_batch."""
+import math
 import os
 import sys
 
@@ -39,12 +40,44 @@ def test_the_pioneers_exploration_passes_its_mapper_to_the_launch():
     assert run.launch == 'pioneer_2dnav explore.launch' and 'mapper:=gmapping' in run.launch_args
 
 
+def stacking_options(**given):
+    import argparse
+    return argparse.Namespace(**dict(dict(layouts=3, first_seed=5, cans=3, region='band'), **given))
+
+
 def test_stacking_is_one_run_per_layout_seed():
     import bench_katana_stacking
-    runs = runs_of(bench_katana_stacking.scenario(3, 5))
+    runs = runs_of(bench_katana_stacking.scenario(stacking_options()))
     assert [r.seed for r in runs] == [5, 6, 7]
     assert [r.run_id for r in runs] == ['katana_stacking[seed=5]', 'katana_stacking[seed=6]', 'katana_stacking[seed=7]']
-    assert runs[1].launch_args == ('cans_seed:=6',) and runs[1].check.endswith('--check 6')
+    assert sorted(runs[1].launch_args) == ['cans_count:=3', 'cans_range:=0.34,0.42', 'cans_seed:=6']
+    assert runs[1].check.endswith('--check 6 --cans 3 --region band')
+
+
+def test_stacking_over_the_reach_draws_between_the_ranges_the_arm_takes_a_can_at():
+    """docs/KATANA.md: taking reaches from 0.32 m (the elbow's limit) to 0.4654 m (the arm
+    stretched), here on the benchmark's 5 mm grid."""
+    import bench_katana_stacking
+    run = runs_of(bench_katana_stacking.scenario(stacking_options(cans=4, region='reach', layouts=1)))[0]
+    assert sorted(run.launch_args) == ['cans_count:=4', 'cans_range:=0.315,0.46', 'cans_seed:=5']
+    assert run.check.endswith('--check 5 --cans 4 --region reach')
+
+
+def test_the_tower_is_the_highest_standing_column():
+    from geometry_msgs.msg import Pose
+    import bench_katana_stacking as bench
+
+    def can(x, y, level, tilt_rad=0.0):
+        pose = Pose()
+        pose.position.x, pose.position.y, pose.position.z = x, y, bench.TABLE + level * bench.CAN_HEIGHT
+        pose.orientation.x, pose.orientation.w = math.sin(tilt_rad / 2), math.cos(tilt_rad / 2)
+        return pose
+    poses = {'a': can(0.35, 0.0, 0), 'b': can(0.355, 0.005, 1), 'c': can(0.35, -0.005, 2), 'd': can(0.3, 0.2, 0)}
+    assert bench.tallest_column(poses) == ['a', 'b', 'c']
+    poses['b'] = can(0.35, 0.03, 1)  # 3 cm off the axis: not on the tower; c hangs over nothing
+    assert len(bench.tallest_column(poses)) == 1
+    poses['b'] = can(0.35, 0.0, 1, tilt_rad=0.3)  # 17 degrees: not standing
+    assert len(bench.tallest_column(poses)) == 1
 
 
 @pytest.mark.parametrize('mapper, args', [('hector', ()), ('gmapping', ('mapper:=gmapping',))])

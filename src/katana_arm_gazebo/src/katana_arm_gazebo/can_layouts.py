@@ -4,6 +4,7 @@ Random layouts are what the stacking benchmark runs on: cans the arm can take wi
 grasp and the laser can see, far enough apart that the open gripper passes between them, each
 on its own line of sight from the base so that reaching one never sweeps through another.
 """
+import dataclasses
 import math
 import random
 from dataclasses import dataclass
@@ -38,6 +39,19 @@ def parse_positions(text: str) -> List[Tuple[float, float]]:
             raise ValueError('can position %r: expected x,y in metres, e.g. 0.3,-0.1' % pair) from None
         positions.append((x, y))
     return positions
+
+
+def parse_range(text: str, rules: LayoutRules) -> LayoutRules:
+    """'0.32,0.46' -> rules drawing between those ranges (m); '' keeps rules; ValueError saying why."""
+    if not text.strip():
+        return rules
+    try:
+        low, high = (float(v) for v in text.split(','))
+    except ValueError:
+        raise ValueError('can range %r: expected min,max in metres, e.g. 0.32,0.46' % text) from None
+    if not (math.isfinite(low) and math.isfinite(high) and 0.0 < low < high):
+        raise ValueError('can range %r: expected 0 < min < max, both finite' % text)
+    return dataclasses.replace(rules, min_range=low, max_range=high)
 
 
 def fits(positions: List[Tuple[float, float]], x: float, y: float, rules: LayoutRules) -> bool:

@@ -6,7 +6,7 @@ import sys
 import pytest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'src'))
-from katana_arm_gazebo.can_layouts import LayoutRules, parse_positions, random_layout  # noqa: E402
+from katana_arm_gazebo.can_layouts import LayoutRules, parse_positions, parse_range, random_layout  # noqa: E402
 
 
 def test_parse_positions():
@@ -32,6 +32,18 @@ def test_random_layouts_keep_the_rules_and_repeat_by_seed():
                 assert gap >= rules.min_bearing_gap
     # Different seeds, different layouts.
     assert len({tuple(random_layout(3, s)) for s in range(20)}) == 20
+
+
+def test_a_range_given_draws_four_cans_over_it():
+    rules = parse_range('0.32,0.46', LayoutRules())
+    assert (rules.min_range, rules.max_range) == (0.32, 0.46)
+    assert parse_range(' ', LayoutRules()) == LayoutRules()
+    ranges = [math.hypot(x, y) for seed in range(200) for x, y in random_layout(4, seed, rules)]
+    assert 0.32 <= min(ranges) < 0.33 and 0.45 < max(ranges) <= 0.46  # the whole band is drawn from
+    for bad, why in (('0.46,0.32', 'expected 0 < min < max'), ('0.3', 'expected min,max'), ('a,b', 'expected min,max'),
+                     ('0,0.4', 'expected 0 < min < max'), ('0.3,inf', 'expected 0 < min < max')):
+        with pytest.raises(ValueError, match=r"can range '%s': %s" % (bad, why)):
+            parse_range(bad, LayoutRules())
 
 
 def test_impossible_rules_say_so():
