@@ -8,15 +8,15 @@ driving real processes in a new user's home; each file a suite of its own).
 Results are read back from the runners' JUnit XML files, so a crash that writes no result
 counts as a failure. Exit status is 0 only if everything passed and at least one test ran.
 
-The gtests and rostests run --jobs at a time (default: one per core): each rostest has its own
-roscore on a free port and most of a simulation test's time is waiting, so two at once on two
-cores take about 0.75 of the time. Then the walkthroughs run one by one, beside the pytest suite:
-they use the default master port and type the tutorials' `killall roscore` and `killall gzserver`,
-so each runs in a PID namespace of its own (unshare, as root), where those reach only what the
-walkthrough started, not the pytest suite's simulators (named gzserver too). Without namespaces
-the pytest suite runs with the rostests and the walkthroughs alone at the end. Rostests never run
-beside a walkthrough: the sim-time bounds of the Katana tests failed under that load. Lines are
-printed as suites end.
+The gtests, rostests and the pytest suite run --jobs at a time (default: one per core): each
+rostest has its own roscore on a free port and most of a simulation test's time is waiting, so
+two at once on two cores take about 0.75 of the time. The walkthroughs run after them: they use
+the default master port and type the tutorials' `killall roscore` and `killall gzserver`, and the
+simulator of every rostest is named gzserver too. Where the machine allows namespaces (root,
+unshare), each walkthrough runs in a PID and network namespace of its own, where those commands
+reach only what it started and its master's port is its own, two at a time; otherwise one by one.
+Rostests never run beside a walkthrough (the Katana tests' sim-time bounds failed under that
+load). Lines are printed as suites end.
 
 Usage: run_tests.py [--only SUBSTRING] [--jobs N]
 """
@@ -107,15 +107,17 @@ def stop_walkthrough_leftovers():
             pass
 
 
-def in_own_pid_namespace(cmd):
-    """cmd under a new PID namespace (its own /proc), bash as its PID 1: bash reaps the orphans
-    that `killall` leaves, so a tutorial's poll for them ending sees them gone."""
-    return ["unshare", "--pid", "--fork", "--mount-proc", "--kill-child", "bash", "-c", '"$@"; exit $?', "_"] + cmd
+def in_own_namespaces(cmd):
+    """cmd in new PID and network namespaces (its own /proc, its own loopback), bash as its PID 1:
+    bash reaps the orphans that `killall` leaves, so a tutorial's poll for them ending sees them
+    gone. Its nodes name themselves localhost, which the new loopback answers for."""
+    return ["unshare", "--pid", "--fork", "--mount-proc", "--net", "--kill-child", "bash", "-c",
+            'ip link set lo up && export ROS_HOSTNAME=localhost && "$@"; exit $?', "_"] + cmd
 
 
-def pid_namespaces_work():
+def namespaces_work():
     try:
-        return subprocess.run(in_own_pid_namespace(["true"]), capture_output=True, timeout=30).returncode == 0
+        return subprocess.run(in_own_namespaces(["true"]), capture_output=True, timeout=30).returncode == 0
     except (OSError, subprocess.TimeoutExpired):
         return False
 
@@ -124,7 +126,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--only", default="", help="run only suites whose name contains this")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1,
-                        help="suites run at once (default: the number of cores); walkthroughs one at a time")
+                        help="suites run at once (default: the number of cores); walkthroughs two at most")
     args = parser.parse_args()
     os.makedirs(RESULTS, exist_ok=True)
     suites = []
@@ -176,28 +178,26 @@ def main():
         return run(name, cmd, xml, env=rostest_env if name.startswith("rostest") else None)
 
     walkthroughs = [suite for suite in chosen if suite[0].startswith("walkthrough")]
-    pytest_suite = [suite for suite in chosen if suite[0].startswith("pytest")]
-    beside_walkthroughs = pytest_suite if walkthroughs and args.jobs > 1 and pid_namespaces_work() else []
-    shared = [suite for suite in chosen if suite not in walkthroughs and suite not in beside_walkthroughs]
+    shared = [suite for suite in chosen if suite not in walkthroughs]
     # The pytest suite is the longest: started first, it does not end the run alone.
     shared.sort(key=lambda suite: not suite[0].startswith("pytest"))
+    apart = bool(walkthroughs) and args.jobs > 1 and namespaces_work()
 
-    def run_walkthroughs():
-        counts = [0, 0, 0]
-        for name, cmd, xml in walkthroughs:
-            cmd = in_own_pid_namespace(cmd) if beside_walkthroughs else cmd
-            counts = [t + n for t, n in zip(counts, run(name, cmd, xml))]
-            stop_walkthrough_leftovers()
+    def run_walkthrough(suite):
+        name, cmd, xml = suite
+        if apart:  # everything it started ends with its namespace
+            return run(name, in_own_namespaces(cmd), xml)
+        counts = run(name, cmd, xml)
+        stop_walkthrough_leftovers()
         return counts
 
     totals = [0, 0, 0]
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
         for counts in pool.map(run_suite, shared):
             totals = [t + n for t, n in zip(totals, counts)]
-    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
-        ends = [pool.submit(run_walkthroughs)] + [pool.submit(run_suite, suite) for suite in beside_walkthroughs]
-        for end in ends:
-            totals = [t + n for t, n in zip(totals, end.result())]
+    with concurrent.futures.ThreadPoolExecutor(max_workers=2 if apart else 1) as pool:
+        for counts in pool.map(run_walkthrough, walkthroughs):
+            totals = [t + n for t, n in zip(totals, counts)]
     print()
     print("%d passed, %d failed, %d skipped" % tuple(totals))
     return 0 if totals[1] == 0 and totals[0] > 0 else 1

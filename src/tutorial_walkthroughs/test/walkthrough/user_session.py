@@ -152,8 +152,11 @@ class UserSession:
             'PATH': '/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin',
             'TMPDIR': tempfile.gettempdir(), MARKER: self.id,
         }
-        if 'DISPLAY' in os.environ:
-            self.env['DISPLAY'] = os.environ['DISPLAY']
+        # The machine's own settings, as a new user's shell has them (run_tests.py names the nodes
+        # localhost when a walkthrough has a network namespace of its own).
+        for name in ('DISPLAY', 'ROS_HOSTNAME', 'ROS_IP'):
+            if name in os.environ:
+                self.env[name] = os.environ[name]
 
     def speed_up(self, factor):
         """Not a tutorial's step: the test's own, to wait less. The simulator runs `factor` times
