@@ -32,6 +32,7 @@ until stack_cans exits. Then, from /gazebo/get_model_state:
   - the detection error: each can found against where it was spawned.
 """
 import argparse
+import itertools
 import json
 import math
 import os
@@ -146,10 +147,10 @@ def check(seed, count, region):
         time.sleep(0.05)
     after = poses()
     # The column as it stands 3 s on, up to its first can that was still moving.
-    still = [math.dist((after[n].position.x, after[n].position.y, after[n].position.z),
-                       (before[n].position.x, before[n].position.y, before[n].position.z)) < 0.005
-             for n in tallest_column(after)]
-    column = tallest_column(after)[:still.index(False) if False in still else len(still)]
+    column = list(itertools.takewhile(
+        lambda n: math.dist((after[n].position.x, after[n].position.y, after[n].position.z),
+                            (before[n].position.x, before[n].position.y, before[n].position.z)) < 0.005,
+        tallest_column(after)))
 
     with lock:
         log = '\n'.join(said)
