@@ -5,8 +5,9 @@ The tower's level rises as cans go on it, and the arm's reach shrinks with it (d
 can's spot is tried as the tower and every order of the others, each scored by how many cans go
 on: can i goes to level L (the cans already on the tower, plus one) if fits(i, tower, L), and a
 can that does not fit is skipped, the tower growing only by those that do (as stack_cans runs a
-plan). Ties keep the tutorial's choice: the middle can by bearing as the tower (stacking.
-choose_tower), the nearest cans first (stacking.pick_order).
+plan). Any can may be the tower, even one the arm cannot take. Ties keep the tutorial's choice:
+the middle can by bearing of those the arm can take as the tower (stacking.choose_tower), the
+nearest cans first (stacking.pick_order).
 """
 import functools
 import itertools
@@ -33,7 +34,10 @@ def placed(order: Sequence[int], tower: int, fits: Callable[[int, int, int], boo
 def choose_stack(cans: Sequence[Tuple[float, float]], fits: Callable[[int, int, int], bool]) -> Tuple[int, List[int]]:
     """The tower (an index into cans) and the order the others go to it in. fits(i, tower, level):
     whether can i can be set `level` cans high on the tower standing at can `tower`'s spot."""
-    preferred = choose_tower(cans)
+    # The tutorial's tower is the middle one of the cans the arm can take: one it cannot move (too
+    # far or too near) is a tower only when that puts more cans on.
+    movable = [i for i in range(len(cans)) if any(fits(i, t, 1) for t in range(len(cans)) if t != i)]
+    preferred = movable[choose_tower([cans[i] for i in movable])] if movable else choose_tower(cans)
     best = None
     for tower in [preferred] + [t for t in range(len(cans)) if t != preferred]:
         nearest_first = pick_order(cans, tower)

@@ -121,6 +121,36 @@ def plan_can(geometry: KatanaGeometry, q_start: Sequence[float], can, tower, lev
         options.min_grasp_height, max(options.grasp_heights), options.min_pitch, options.max_pitch, why_not))
 
 
+def plan_can_from_here(geometry: KatanaGeometry, q_now: Sequence[float], can, tower, level: int,
+                       options: StackingOptions = StackingOptions(), timing: TimingOptions = TimingOptions(),
+                       standing: Sequence[Tuple[float, float]] = ()) -> Tuple[List[Step], List[JointPath]]:
+    """plan_can from the arm's joints q_now or, where that finds nothing, after a first straight
+    move that takes the tool farther from what it last let go of: up by retreat_distance, back
+    along the line to the base by approach_distance, or both. After a can the open fingers are
+    just behind the tower and little above its top, and the way from there to the next can may
+    pass too close to it, while from higher or farther back it does not (tower_choice scores
+    plans from where the arm started). PlanError with plan_can's reason from q_now otherwise."""
+    try:
+        return plan_can(geometry, q_now, can, tower, level, options, timing=timing, standing=standing)
+    except PlanError as from_here:
+        failure = from_here
+    here = tool_pose(geometry, q_now)
+    back = max(0.0, here.radius - options.approach_distance) / max(here.radius, 1e-9)
+    up = here.z + options.retreat_distance
+    for what, via in (('up, clear of the tower', ToolPose(here.x, here.y, up, here.pitch)),
+                      ('back, clear of the tower', ToolPose(here.x * back, here.y * back, here.z, here.pitch)),
+                      ('back and up, clear of the tower', ToolPose(here.x * back, here.y * back, up, here.pitch))):
+        move = Move(what, (via,))
+        try:
+            first = joint_path(geometry, q_now, move, timing=timing)
+            steps, paths = plan_can(geometry, first.positions[-1], can, tower, level, options, timing=timing,
+                                    standing=standing)
+        except PlanError:
+            continue
+        return [move] + steps, [first] + paths
+    raise failure
+
+
 def _plan_lower(geometry, q_start, can, tower, level, height, pitch, obstacles, options, roll, timing):
     """plan_can's second search for one grasp: the approach and the carry at the highest heights
     (carry_step apart) that the arm reaches and that clear the obstacles."""

@@ -12,7 +12,8 @@ from katana_pick import katana_ik  # noqa: E402
 from katana_pick.arm_geometry import KatanaGeometry, within_limits  # noqa: E402
 from katana_pick.stacking import (Grip, Move, StackingOptions, ToolPose, can_steps, carry_height,  # noqa: E402
                                   choose_tower, interpolate, pick_order, pitches)
-from katana_pick.trajectories import PlanError, TimingOptions, back_off, plan_can, tool_pose  # noqa: E402
+from katana_pick.trajectories import (PlanError, TimingOptions, back_off, plan_can, plan_can_from_here,  # noqa: E402
+                                      tool_pose)
 
 G = KatanaGeometry()
 O = StackingOptions()
@@ -132,6 +133,27 @@ def test_every_layout_the_simulation_draws_has_a_plan():
         for level, i in enumerate(pick_order(cans, tower), start=1):
             steps, paths = plan_can(G, q, cans[i], cans[tower], level)
             q = paths[-1].positions[-1]
+
+
+def test_the_next_can_is_planned_from_above_the_tower_where_the_way_from_beside_it_is_blocked():
+    # A layout (seed 5 of four cans over the reach): after the first can goes onto the tower, the
+    # open fingers are 0.10 m behind it and 5 mm above its top; every way down to the can at
+    # (0.262, -0.363) from there would sweep them past the tower's top.
+    cans = [(0.342, 0.229), (0.204, 0.383), (0.319, -0.027), (0.262, -0.363)]
+    _, paths = plan_can(G, START, cans[0], cans[2], 1, standing=[cans[1], cans[3]])
+    after_first = paths[-1].positions[-1]
+    with pytest.raises(PlanError):
+        plan_can(G, after_first, cans[3], cans[2], 2, standing=[cans[1]])
+    steps, paths = plan_can_from_here(G, after_first, cans[3], cans[2], 2, standing=[cans[1]])
+    # First straight up by retreat_distance, then the can's own plan from there.
+    assert steps[0].what == 'up, clear of the tower' and len(paths) == len([s for s in steps if isinstance(s, Move)])
+    here, up = tool_pose(G, after_first), tool_pose(G, paths[0].positions[-1])
+    assert math.hypot(up.x - here.x, up.y - here.y) < 1e-6
+    assert up.z - here.z == pytest.approx(O.retreat_distance, abs=1e-6)
+    assert steps[1:] == plan_can(G, paths[0].positions[-1], cans[3], cans[2], 2, standing=[cans[1]])[0]
+    # Where the direct plan works, it is the plan.
+    first = plan_can_from_here(G, START, cans[0], cans[2], 1, standing=[cans[1], cans[3]])
+    assert first == plan_can(G, START, cans[0], cans[2], 1, standing=[cans[1], cans[3]])
 
 
 def test_out_of_reach_says_why():

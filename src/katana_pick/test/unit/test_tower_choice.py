@@ -43,6 +43,23 @@ def test_a_tower_no_can_reaches_is_passed_over_for_one_that_takes_them_all():
     assert tower == 0 and sorted(order) == [1, 2, 3] and placed(order, tower, fits) == 3
 
 
+def test_a_can_the_arm_cannot_take_is_the_tower_when_that_puts_every_other_on():
+    # Can 2 (the tutorial's tower) cannot be moved, but everything goes onto it.
+    def fits(i, t, level):
+        return i != 2
+    tower, order = choose_stack(CANS, fits)
+    assert tower == 2 and placed(order, tower, fits) == 3
+
+
+def test_on_a_tie_the_tower_is_the_middle_one_of_the_cans_the_arm_can_take():
+    # Can 2 can neither be moved nor be built on: of the others (1, 0, 3 by bearing) the middle
+    # one, 0, is the tower, as the tutorial would choose among the cans it can take.
+    def fits(i, t, level):
+        return 2 not in (i, t)
+    tower, order = choose_stack(CANS, fits)
+    assert tower == 0 and placed(order, tower, fits) == 2 and order[:2] == pick_order(CANS, 0)[:2]
+
+
 def test_a_carried_can_is_kept_off_the_tower_and_passes_above_it():
     can = Held(drop=0.06, radius=O.can_radius)
     tower = [Obstacle(0.35, 0.0, 0.24, O.can_radius)]
