@@ -102,16 +102,20 @@ def tallest_column(poses):
     return best
 
 
+def reports_of(node, rosout_log):
+    """The messages `node` logged, from the lines of a rosout.log (the rosout node's file)."""
+    line = re.compile(r'^\S+ \w+ %s \[[^\]]*\] \[topics: [^\]]*\] (.*)$' % re.escape(node))
+    return [m.group(1) for m in map(line.match, rosout_log) if m]
+
+
 def stack_cans_reports():
     """What stack_cans logged, as its terminal showed it: from this run's rosout.log, written by
     the rosout node from the start (a subscriber to /rosout started beside the launch misses the
     reports stack_cans makes before it connects, such as the cans it skips at once)."""
     import rospkg
     import rospy
-    path = os.path.join(rospkg.get_log_dir(), rospy.get_param('/run_id'), 'rosout.log')
-    line = re.compile(r'^\S+ \w+ /stack_cans \[[^\]]*\] \[topics: [^\]]*\] (.*)$')
-    with open(path, errors='replace') as log:
-        return [m.group(1) for m in map(line.match, log) if m]
+    with open(os.path.join(rospkg.get_log_dir(), rospy.get_param('/run_id'), 'rosout.log'), errors='replace') as log:
+        return reports_of('/stack_cans', log)
 
 
 def check(seed, count, region):

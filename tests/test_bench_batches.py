@@ -87,3 +87,19 @@ def test_navigation_is_split_by_seed_each_run_driving_its_goals(mapper, args):
     assert [r.seed for r in runs] == [2, 3] and all(r.launch_args == args for r in runs)
     assert '--goals 10' in runs[0].check and runs[0].check.endswith('--check 2')
     assert runs[0].time_limit == 300.0 + 10 * 120.0
+
+
+def test_stack_cans_reports_are_read_from_the_rosout_log():
+    """The lines as Debian's rosout node writes them: stamp, level, node, [file:line(function)],
+    [topics: ...], the message; other nodes' lines are left out."""
+    import bench_katana_stacking
+    log = [
+        '2.632000000 INFO /stack_cans [stack_cans:312(main)] [topics: /rosout, /stack_cans/cans] '
+        'stack_cans: 4 cans: (0.200, -0.360), (0.363, -0.193)\n',
+        '5.062000000 ERROR /stack_cans [stack_cans:254(CanStacker.stack)] [topics: /rosout] '
+        'stack_cans: can at (0.215, 0.233): unreachable, skipped: no grasp [0.04] reaches it\n',
+        '5.100000000 INFO /spawn_cans [spawn_cans:40(main)] [topics: /rosout] spawned can_4\n',
+    ]
+    assert bench_katana_stacking.reports_of('/stack_cans', log) == [
+        'stack_cans: 4 cans: (0.200, -0.360), (0.363, -0.193)',
+        'stack_cans: can at (0.215, 0.233): unreachable, skipped: no grasp [0.04] reaches it']
