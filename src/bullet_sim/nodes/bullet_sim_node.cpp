@@ -7,7 +7,8 @@
 // --timing prints, at exit, where the loop's time went (see loop_timing.h).
 // --list-plugins prints the plugin libraries models can name, and exits.
 // gzserver's other options (-e bullet, -s libfoo.so, --seed 3, ...) are accepted with a warning.
-// A world file that cannot be read exits with status 1 and a message naming the problem.
+// A world file that cannot be read exits with status 1 and a message naming the problem; a
+// crash prints the stack it happened on (crash_report.h).
 #include <ros/package.h>
 #include <ros/ros.h>
 #include <sys/prctl.h>
@@ -19,6 +20,7 @@
 #include <sstream>
 #include <vector>
 
+#include "bullet_sim/crash_report.h"
 #include "bullet_sim/simulator.h"
 #include "bullet_sim_core/description_error.h"
 #include "bullet_sim_core/sdf_parser.h"
@@ -102,6 +104,7 @@ int main(int argc, char** argv) {
   // Named as Gazebo's server is, so that `killall gzserver` (in the tutorials) stops the simulator
   // however it was started. Threads started later inherit the name.
   prctl(PR_SET_NAME, "gzserver", 0, 0, 0);
+  bullet_sim::reportCrashesOnStderr("bullet_sim_node");
   ros::init(argc, argv, "gazebo");
   std::vector<std::string> args;
   ros::removeROSArgs(argc, argv, args);

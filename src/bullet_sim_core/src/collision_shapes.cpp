@@ -177,8 +177,11 @@ class CylinderCylinderAlgorithm : public btActivatingCollisionAlgorithm {
     const btCollisionObject* a = body0->getCollisionObject();
     const btCollisionObject* b = body1->getCollisionObject();
     if (m_dispatcher->needsCollision(a, b)) manifold_ = m_dispatcher->getNewManifold(a, b);
-    // Bullet's own algorithm for every other way two cylinders touch; it keeps a manifold of its own.
+    // Bullet's own algorithm for every other way two cylinders touch, on this algorithm's manifold:
+    // with a manifold of its own, made lazily, it crashed the simulator when a can was let go
+    // onto a tower (reading a manifold that was no longer valid; katana layout seed 2).
     btCollisionAlgorithmConstructionInfo general_info(info.m_dispatcher1, 0);
+    general_info.m_manifold = manifold_;
     general_ = general->CreateCollisionAlgorithm(general_info, body0, body1);
   }
   ~CylinderCylinderAlgorithm() override {
@@ -192,14 +195,16 @@ class CylinderCylinderAlgorithm : public btActivatingCollisionAlgorithm {
   void processCollision(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
                         const btDispatcherInfo& info, btManifoldResult* result) override {
     if (!manifold_) return;
-    if (!capOnCap(body0, body1, result)) {
-      manifold_->clearManifold();
-      general_->processCollision(body0, body1, info, result);
+    if (capOnCap(body0, body1, result)) {
+      on_cap_ = true;
       return;
     }
-    btManifoldArray general_manifolds;
-    general_->getAllContactManifolds(general_manifolds);
-    for (int i = 0; i < general_manifolds.size(); ++i) general_manifolds[i]->clearManifold();
+    // The two ways keep their points apart: a switch starts the manifold afresh.
+    if (on_cap_) manifold_->clearManifold();
+    on_cap_ = false;
+    general_->processCollision(body0, body1, info, result);
+    // Bullet's algorithm drops stale points only from a manifold of its own: this one's, here.
+    if (manifold_->getNumContacts()) result->refreshContactPoints();
   }
 
   btScalar calculateTimeOfImpact(btCollisionObject* body0, btCollisionObject* body1, const btDispatcherInfo& info,
@@ -209,7 +214,6 @@ class CylinderCylinderAlgorithm : public btActivatingCollisionAlgorithm {
 
   void getAllContactManifolds(btManifoldArray& manifolds) override {
     if (manifold_) manifolds.push_back(manifold_);
-    general_->getAllContactManifolds(manifolds);
   }
 
   struct CreateFunc : public btCollisionAlgorithmCreateFunc {
@@ -271,6 +275,7 @@ class CylinderCylinderAlgorithm : public btActivatingCollisionAlgorithm {
   // cap's plane along lower's normal n. Manifold point reduction keeps four of them, deepest first.
   void addCapContacts(const Cylinder& lower, const Cylinder& upper, const btVector3& n, const btVector3& cap,
                       const btVector3& m, const btVector3& upper_cap, bool body1_lower, btManifoldResult* result) {
+    if (!on_cap_) manifold_->clearManifold();
     result->setPersistentManifold(manifold_);
     const FrictionAnchors anchors(manifold_);
     const btScalar threshold = manifold_->getContactBreakingThreshold();
@@ -303,6 +308,7 @@ class CylinderCylinderAlgorithm : public btActivatingCollisionAlgorithm {
 
   btPersistentManifold* manifold_ = nullptr;
   btCollisionAlgorithm* general_ = nullptr;
+  bool on_cap_ = false;  // whether the last contacts were the caps'
 };
 
 }  // namespace
