@@ -20,7 +20,8 @@ until stack_cans exits. Then, from /gazebo/get_model_state:
   - stacked: the cans of the highest standing column (each level within 1 cm of its height,
     within 2 cm of the bottom can's axis, tilted less than 10 degrees, still so 3 s later);
     against stackable, the most cans katana_pick.reach says one tower can take (every can's
-    spot as the tower and every order; the reach of each can, not the clearance between them);
+    spot and every free range on a 1 cm grid as the tower, every order; the reach of each can,
+    not the clearance between them);
   - success: every can in the tower; otherwise the cause, the first that applies: unreachable
     (the planner refused a can), no attach (a moved can never attached to the gripper), no
     release (attached and never let go), tip-over (a can lies tilted more than 20 degrees), slip
@@ -66,17 +67,16 @@ def layout_rules(region):
 
 
 def stackable(layout):
-    """The most cans of the layout one tower can hold by the arm's reach (katana_pick.reach)."""
+    """The most cans of the layout one tower can hold by the arm's reach (katana_pick.reach): on a
+    can's own spot, or on a free spot (a 1 cm grid of ranges) the first can is set down at."""
     from katana_pick.arm_geometry import KatanaGeometry
+    from katana_pick.free_spots import tower_size
     from katana_pick.reach import reach_map
-    from katana_pick.tower_choice import choose_stack, placed
     ranges = [round(math.hypot(x, y), 6) for x, y in layout]
-    reach = reach_map(KatanaGeometry(), sorted(set(ranges)), max_level=len(layout) - 1)
-
-    def fits(i, tower, level):
-        return bool(reach.stackable(ranges[i], ranges[tower], level))
-    tower, order = choose_stack(layout, fits)
-    return 1 + placed(order, tower, fits)
+    grid = [round(0.25 + 0.01 * i, 6) for i in range(26)]  # 0.25-0.50 m
+    reach = reach_map(KatanaGeometry(), sorted(set(ranges + grid)), max_level=len(layout) - 1)
+    own = max(tower_size(reach, ranges[:t] + ranges[t + 1:], ranges[t], False) for t in range(len(layout)))
+    return max([own] + [tower_size(reach, ranges, r, True) for r in grid])
 
 
 def tallest_column(poses):
@@ -184,7 +184,7 @@ def check(seed, count, region):
     print(json.dumps({'seed': seed, 'cans': count, 'region': region, 'layout': layout, 'success': success,
                       'stacked': len(column), 'stackable': most, 'knocked': knocked,
                       'unreported': max(0, count - len(column) - reported), 'cause': cause,
-                      'sim_s': sim_s, 'wall_s': wall_s, 'moved': max(0, len(column) - 1),
+                      'sim_s': sim_s, 'wall_s': wall_s, 'moved': len({o for o, held in events if held}),
                       'found': len(seen), 'detection_errors': errors, 'events': events,
                       'errors': errors_line[:4], 'sim_time': world().sim_time}), flush=True)
 

@@ -7,7 +7,8 @@ on: can i goes to level L (the cans already on the tower, plus one) if fits(i, t
 can that does not fit is skipped, the tower growing only by those that do (as stack_cans runs a
 plan). Any can may be the tower, even one the arm cannot take. Ties keep the tutorial's choice:
 the middle can by bearing of those the arm can take as the tower (stacking.choose_tower), the
-nearest cans first (stacking.pick_order).
+nearest cans first (stacking.pick_order). Where no can's spot takes them all, a free spot
+(free_spots.py) may: the first can is carried there and set on the table, the others on it.
 """
 import functools
 import itertools
@@ -22,46 +23,65 @@ from katana_pick.trajectories import PlanError, TimingOptions, plan_can
 MAX_CANS_FOR_EVERY_ORDER = 7
 
 
-def placed(order: Sequence[int], tower: int, fits: Callable[[int, int, int], bool]) -> int:
-    """How many of the cans in `order` go onto the tower, each to the level above the last that did."""
-    level = 0
+def placed(order: Sequence[int], tower: int, fits: Callable[[int, int, int], bool], first_level: int = 1) -> int:
+    """How many of the cans in `order` go onto the tower, each to the level above the last that
+    did, the first to first_level (0 on a free spot: onto the table)."""
+    level = first_level
     for i in order:
-        if fits(i, tower, level + 1):
+        if fits(i, tower, level):
             level += 1
-    return level
+    return level - first_level
 
 
-def choose_stack(cans: Sequence[Tuple[float, float]], fits: Callable[[int, int, int], bool]) -> Tuple[int, List[int]]:
-    """The tower (an index into cans) and the order the others go to it in. fits(i, tower, level):
-    whether can i can be set `level` cans high on the tower standing at can `tower`'s spot."""
+def in_tower(n: int, tower: int, order: Sequence[int], fits: Callable[[int, int, int], bool]) -> int:
+    """How many of the n cans end in the tower: those the order puts on it, and the tower's own
+    can when it stands on a can's spot (tower < n)."""
+    own = tower < n
+    return placed(order, tower, fits, 1 if own else 0) + (1 if own else 0)
+
+
+def choose_stack(cans: Sequence[Tuple[float, float]], fits: Callable[[int, int, int], bool],
+                 free: Sequence[Tuple[float, float]] = ()) -> Tuple[int, List[int]]:
+    """The tower and the order the cans go to it in. The tower is an index into cans + free: a
+    can's own spot (that can stays; the order holds the others) or a free spot (the order's first
+    can is set there on the table, level 0; free_spots.py), tried after the cans' spots and taken
+    only when it holds more cans. fits(i, tower, level): whether can i can be set `level` cans
+    high on the tower at that spot."""
+    n = len(cans)
     # The tutorial's tower is the middle one of the cans the arm can take: one it cannot move (too
     # far or too near) is a tower only when that puts more cans on.
-    movable = [i for i in range(len(cans)) if any(fits(i, t, 1) for t in range(len(cans)) if t != i)]
+    movable = [i for i in range(n) if any(fits(i, t, 1) for t in range(n) if t != i)]
     preferred = movable[choose_tower([cans[i] for i in movable])] if movable else choose_tower(cans)
     best = None
-    for tower in [preferred] + [t for t in range(len(cans)) if t != preferred]:
-        nearest_first = pick_order(cans, tower)
-        orders = itertools.permutations(nearest_first) if len(cans) <= MAX_CANS_FOR_EVERY_ORDER else [nearest_first]
+    towers = [preferred] + [t for t in range(n) if t != preferred] + list(range(n, n + len(free)))
+    for tower in towers:
+        own = tower < n
+        spot = cans[tower] if own else free[tower - n]
+        nearest_first = pick_order(list(cans) + [spot], n) if not own else pick_order(cans, tower)
+        orders = itertools.permutations(nearest_first) if n <= MAX_CANS_FOR_EVERY_ORDER else [nearest_first]
         for order in orders:
-            count = placed(order, tower, fits)
+            count = in_tower(n, tower, order, fits)
             if best is None or count > best[0]:
                 best = (count, tower, list(order))
-            if count == len(cans) - 1:
+            if count == n:
                 return tower, list(order)
     return best[1], best[2]
 
 
 def fits_by_plan(geometry: KatanaGeometry, q_start: Sequence[float], cans: Sequence[Tuple[float, float]],
                  also_standing: Sequence[Tuple[float, float]] = (), options: StackingOptions = StackingOptions(),
-                 timing: TimingOptions = TimingOptions()) -> Callable[[int, int, int], bool]:
+                 timing: TimingOptions = TimingOptions(),
+                 free: Sequence[Tuple[float, float]] = ()) -> Callable[[int, int, int], bool]:
     """choose_stack's fits, remembered: whether plan_can finds a plan from q_start for cans[i] onto
-    a tower `level` high at cans[tower], past every other can counted as standing (those of cans
-    and also_standing, cans the arm does not reach)."""
+    a tower `level` high at (cans + free)[tower], past every other can counted as standing (those
+    of cans and also_standing, cans the arm does not reach)."""
+    towers = list(cans) + list(free)
+
     @functools.lru_cache(maxsize=None)
     def fits(i, tower, level):
         standing = [c for k, c in enumerate(cans) if k not in (i, tower)] + list(also_standing)
         try:
-            plan_can(geometry, q_start, cans[i], cans[tower], level, options, timing=timing, standing=standing)
+            plan_can(geometry, q_start, cans[i], towers[tower], level, options, timing=timing, standing=standing)
             return True
         except PlanError:
             return False

@@ -7,12 +7,13 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'src'))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', '..', 'katana_arm_gazebo', 'src'))
-from katana_arm_gazebo.can_layouts import random_layout  # noqa: E402
+from katana_arm_gazebo.can_layouts import LayoutRules, random_layout  # noqa: E402
 from katana_pick import katana_ik, reach  # noqa: E402
 from katana_pick.arm_geometry import KatanaGeometry, within_limits  # noqa: E402
 from katana_pick.clearance import Held, Obstacle, path_conflict  # noqa: E402
 from katana_pick.stacking import Move, StackingOptions, choose_tower, pick_order  # noqa: E402
-from katana_pick.tower_choice import choose_stack, fits_by_plan, placed  # noqa: E402
+from katana_pick.free_spots import BESIDE, free_spots  # noqa: E402
+from katana_pick.tower_choice import choose_stack, fits_by_plan, in_tower, placed  # noqa: E402
 from katana_pick.trajectories import PlanError, plan_can  # noqa: E402
 
 G = KatanaGeometry()
@@ -113,3 +114,44 @@ def test_four_cans_of_the_old_band_make_a_four_high_tower():
         assert placed(order, tower, fits) == 3, seed
         tutorial = choose_tower(cans)
         assert placed(pick_order(cans, tutorial), tutorial, fits) == 2, seed
+
+
+def test_a_free_spot_is_taken_only_when_it_holds_more_cans_than_any_cans_own():
+    spot = (0.36, 0.1)
+    # Every can fits on a free spot from level 0 up; on a can's own spot only to level 2.
+    def fits(i, t, level):
+        return t == len(CANS) or level <= 2
+    tower, order = choose_stack(CANS, fits, [spot])
+    assert tower == len(CANS) and sorted(order) == [0, 1, 2, 3] and in_tower(len(CANS), tower, order, fits) == 4
+    # Where a can's own spot takes all four as well, the tutorial's tower stays.
+    tower, order = choose_stack(CANS, lambda i, t, level: True, [spot])
+    assert tower == 2 and in_tower(len(CANS), tower, order, lambda i, t, level: True) == 4
+
+
+def test_four_far_cans_go_four_high_on_a_free_spot_nearer_the_base():
+    """Seed 17 of four cans over the reach (0.38-0.455 m out): on any can's own spot the fourth
+    level is out of reach; the reach map and the planner both put all four on a spot nearer the
+    base, clear of every can, between two of them by bearing or beside the outermost."""
+    cans = random_layout(4, 17, LayoutRules(min_range=0.315, max_range=0.46))
+    ranges = [math.hypot(x, y) for x, y in cans]
+    assert min(ranges) > 0.37
+    spots = free_spots(cans, G)
+    assert spots
+    for s in spots:
+        assert all(math.dist(s, c) >= 2 * (O.can_radius + O.fingers_radius) for c in cans)
+        assert 0.28 < math.hypot(*s) < min(ranges)
+        bearing = math.atan2(s[1], s[0])
+        assert min(math.atan2(y, x) for x, y in cans) - BESIDE - 1e-9 <= bearing
+        assert bearing <= max(math.atan2(y, x) for x, y in cans) + BESIDE + 1e-9 and abs(bearing) <= math.pi / 2
+    own = fits_by_plan(G, START, cans)
+    tower, order = choose_stack(cans, own)
+    assert in_tower(4, tower, order, own) == 3
+    with_free = fits_by_plan(G, START, cans, free=spots)
+    tower, order = choose_stack(cans, with_free, spots)
+    assert tower >= 4 and in_tower(4, tower, order, with_free) == 4
+
+
+def test_no_free_spot_is_offered_where_a_cans_own_spot_is_as_good():
+    cans = random_layout(3, 1)  # the old band: three high on the middle can
+    assert free_spots(cans, G) == []
+    assert free_spots(cans[:1], G) == []
