@@ -112,13 +112,28 @@ def solutions(g: KatanaGeometry, x, y, z, pitch, seed: Sequence[float] = (0.0,) 
 
 
 def solve(g: KatanaGeometry, x, y, z, pitch, seed: Sequence[float] = (0.0,) * 5,
-          roll: Optional[float] = None) -> Tuple[float, ...]:
+          roll: Optional[float] = None, flipped: Optional[bool] = None) -> Tuple[float, ...]:
     """The five arm joint angles that put the tool frame at (x, y, z) with the given pitch,
-    within the joint limits and closest to seed; IkError if there are none."""
+    within the joint limits and closest to seed; IkError if there are none. flipped, if given:
+    only the branches with the shoulder flipped (True) or not (False)."""
     found, why_not = _solve(g, x, y, z, pitch, seed, roll)
+    if flipped is not None and found:
+        kept = [f for f in found if ('shoulder flipped' in f[0]) == flipped]
+        if not kept:
+            why_not = ('target (%.3f, %.3f, %.3f) m with pitch %.3f rad is reachable only with the shoulder %s '
+                       '(%s), which would turn the gripper half a turn about its axis'
+                       % (x, y, z, pitch, 'not flipped' if flipped else 'flipped', found[0][0]))
+        found = kept
     if not found:
         raise IkError(why_not)
     return found[0][1]
+
+
+def is_flipped(g: KatanaGeometry, q: Sequence[float]) -> bool:
+    """Whether the arm leans over its base (the shoulder flipped): the tool frame behind the
+    plane the pan joint turns the arm in."""
+    upper, fore, gripper = q[1], q[1] + q[2], q[1] + q[2] + q[3]
+    return g.upper_arm * math.cos(upper) + g.forearm * math.cos(fore) + g.wrist_to_tool * math.cos(gripper) < 0
 
 
 def _solve(g, x, y, z, pitch, seed, roll):

@@ -70,10 +70,13 @@ class ToolPose:
 class Move:
     """To these tool poses, in order, from wherever the tool is: along straight lines (line) or
     with the joints interpolated (free moves through the air, which keep clear of the joint
-    limits where a straight line may not)."""
+    limits where a straight line may not). holding: a can is in the gripper, so the arm keeps the
+    side of its base it took the can on (katana_ik.is_flipped): leaning over to the other side
+    turns the gripper half a turn about its axis, and a can held at a pitch with it."""
     what: str
     poses: Tuple[ToolPose, ...]
     line: bool = True
+    holding: bool = False
 
 
 @dataclass(frozen=True)
@@ -148,9 +151,9 @@ def can_steps(can: Tuple[float, float], tower: Tuple[float, float], level: int, 
                                              before), line=False),
         Move('in along the line from the base', (grasp,)),
         Grip('close on the can', o.close_position, hold=True),
-        Move('lift off', (ToolPose(x, y, lifted_z, pitch),)),
-        Move('carry over the tower', carry, line=False),
-        Move('lower onto the tower', (place,)),
+        Move('lift off', (ToolPose(x, y, lifted_z, pitch),), holding=True),
+        Move('carry over the tower', carry, line=False, holding=True),
+        Move('lower onto the tower', (place,), holding=True),
         Grip('let go', o.open_position, hold=False),
         Move('back away towards the base', (away,)),
         Move('rise', (ToolPose(away.x, away.y, place_z + 2 * o.lift, pitch),)),

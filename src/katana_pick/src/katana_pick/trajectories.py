@@ -49,12 +49,13 @@ def joint_path(geometry: KatanaGeometry, q_start: Sequence[float], move: Move, r
     of reach or out of the joint limits."""
     pose = tool_pose(geometry, q_start)
     q_prev = tuple(q_start)
+    side = katana_ik.is_flipped(geometry, q_start) if move.holding else None
     times, positions, t = [], [], 0.0
     for target in move.poses:
         # A free move goes to each pose in one joint-space segment: the controller interpolates.
         for p in interpolate(pose, target, timing.step) if move.line else (target,):
             try:
-                q = katana_ik.solve(geometry, p.x, p.y, p.z, p.pitch, seed=q_prev, roll=roll)
+                q = katana_ik.solve(geometry, p.x, p.y, p.z, p.pitch, seed=q_prev, roll=roll, flipped=side)
             except katana_ik.IkError as e:
                 raise PlanError('%s: %s' % (move.what, e)) from None
             travel = math.sqrt((p.x - pose.x) ** 2 + (p.y - pose.y) ** 2 + (p.z - pose.z) ** 2)

@@ -156,6 +156,29 @@ def test_the_next_can_is_planned_from_above_the_tower_where_the_way_from_beside_
     assert first == plan_can(G, START, cans[0], cans[2], 1, standing=[cans[1], cans[3]])
 
 
+def test_a_held_can_stays_on_the_side_of_the_base_it_was_taken_on():
+    # Layout seed 2 of three cans over the reach: carried from 0.455 m out (bearing 1.09 rad) to
+    # the tower at bearing -1.01 rad, the nearest joints lean the arm over its base (pan 2.13 rad),
+    # which turns the gripper half a turn about its axis: the can, held 0.35 rad pitched, came
+    # down tilted 40 degrees and fell off the tower. Holding a can, every move keeps the side.
+    cans = [(0.172, -0.275), (0.368, 0.239), (0.209, 0.404)]
+    _, first = plan_can(G, START, cans[1], cans[0], 1, standing=[cans[2]])
+    steps, paths = plan_can(G, first[-1].positions[-1], cans[2], cans[0], 2)
+    moves = [s for s in steps if isinstance(s, Move)]
+    held = [p for m, p in zip(moves, paths) if m.holding]
+    assert [m.what for m in moves if m.holding] == ['lift off', 'carry over the tower', 'lower onto the tower']
+    grasp = paths[[m.what for m in moves].index('in along the line from the base')].positions[-1]
+    assert all(katana_ik.is_flipped(G, q) == katana_ik.is_flipped(G, grasp) for p in held for q in p.positions)
+    # The place itself is reachable leaning over; asked to stay, the IK says why it cannot.
+    place = moves[4].poses[-1]
+    leaning = katana_ik.solve(G, place.x, place.y, place.z, place.pitch, seed=(2.13, 1.8, 1.2, 0.5, 0.0))
+    assert katana_ik.is_flipped(G, leaning)
+    assert not katana_ik.is_flipped(G, katana_ik.solve(G, place.x, place.y, place.z, place.pitch,
+                                                        seed=(2.13, 1.8, 1.2, 0.5, 0.0), flipped=False))
+    with pytest.raises(katana_ik.IkError, match='reachable only with the shoulder'):
+        katana_ik.solve(G, 0.40, 0.0, 0.10, 0.0, flipped=True)
+
+
 def test_out_of_reach_says_why():
     with pytest.raises(PlanError, match=r'no grasp .* reaches it .*out of reach by'):
         plan_can(G, START, (0.7, 0.0), (0.38, 0.0), 1)
