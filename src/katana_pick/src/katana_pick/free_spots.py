@@ -17,6 +17,7 @@ from typing import List, Sequence, Tuple
 from katana_pick.arm_geometry import KatanaGeometry
 from katana_pick.reach import ReachMap, reach_map
 from katana_pick.stacking import StackingOptions
+from katana_pick.tower_choice import MAX_CANS_FOR_EVERY_ORDER
 
 GRID_STEP = 0.01   # m between the ranges tried (the best band can be 2 cm wide)
 BESIDE = 0.45      # rad past the outermost cans' bearings
@@ -40,8 +41,8 @@ def tower_size(reach: ReachMap, can_ranges: Sequence[float], r_tower: float, on_
 def free_spots(cans: Sequence[Tuple[float, float]], geometry: KatanaGeometry = KatanaGeometry(),
                options: StackingOptions = StackingOptions()) -> List[Tuple[float, float]]:
     """Free spots for a tower of the cans at (x, y), the most promising first; none when a can's
-    own spot is as good by the reach map."""
-    if len(cans) < 2:
+    own spot is as good by the reach map, and for more cans than tower_choice tries every order of."""
+    if not 2 <= len(cans) <= MAX_CANS_FOR_EVERY_ORDER:
         return []
     can_ranges = [round(math.hypot(x, y), 6) for x, y in cans]
     # From a little nearer the base than the nearest can (levels reach higher there) to the
