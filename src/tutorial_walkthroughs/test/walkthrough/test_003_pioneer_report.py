@@ -82,6 +82,10 @@ def test_the_pioneer_report(user):
 
     # The report's wiring: move_base -> /cmd_vel -> pioneer_pid_controller -> /pioneer/cmd_vel -> the drive.
     assert publishers_and_subscribers(user, '/cmd_vel') == (['/move_base'], ['/pioneer_pid_controller'])
+    # The drive subscribes once the simulator has spawned the robot, which may come after the
+    # controller starts on a busy machine.
+    poll(lambda: publishers_and_subscribers(user, '/pioneer/cmd_vel')[1] == ['/gazebo'], 60,
+         what='the simulator subscribed to /pioneer/cmd_vel')
     publishers, subscribers = publishers_and_subscribers(user, '/pioneer/cmd_vel')
     assert publishers == ['/pioneer_pid_controller'] and subscribers == ['/gazebo']
     # rviz shows the laser and the camera (Figure 2).
