@@ -16,7 +16,7 @@ import re
 import pytest
 
 from ros_cli import echo_once, model_pose, poll, simulator_running, wait_until
-from user_session import WORKSPACE
+from user_session import WORKSPACE, CommandFailed, tail
 
 GOAL = (-1.0, -3.2)  # 2.2 m east of the start (-3.2, -3.2), along the maze's south corridor
 
@@ -84,8 +84,11 @@ def test_the_pioneer_report(user):
     assert publishers_and_subscribers(user, '/cmd_vel') == (['/move_base'], ['/pioneer_pid_controller'])
     # The drive subscribes once the simulator has spawned the robot, which may come after the
     # controller starts on a busy machine.
-    poll(lambda: publishers_and_subscribers(user, '/pioneer/cmd_vel')[1] == ['/gazebo'], 60,
-         what='the simulator subscribed to /pioneer/cmd_vel')
+    try:
+        poll(lambda: publishers_and_subscribers(user, '/pioneer/cmd_vel')[1] == ['/gazebo'], 60,
+             what='the simulator subscribed to /pioneer/cmd_vel')
+    except CommandFailed as failure:
+        raise CommandFailed('%s; the bring-up printed:\n%s' % (failure, tail(bringup.output))) from None
     publishers, subscribers = publishers_and_subscribers(user, '/pioneer/cmd_vel')
     assert publishers == ['/pioneer_pid_controller'] and subscribers == ['/gazebo']
     # rviz shows the laser and the camera (Figure 2).
