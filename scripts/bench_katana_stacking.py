@@ -23,8 +23,8 @@ until stack_cans exits. Then, from /gazebo/get_model_state:
     spot and every free range on a 1 cm grid as the tower, every order; the reach of each can,
     not the clearance between them);
   - success: every can in the tower; otherwise the cause, the first that applies: unreachable
-    (the planner refused a can), no attach (a moved can never attached to the gripper), no
-    release (attached and never let go), tip-over (a can lies tilted more than 20 degrees), slip
+    (the planner refused a can), no release (attached and never let go), no attach (a moved
+    can never attached to the gripper), tip-over (a can lies tilted more than 20 degrees), slip
     (a can was carried and let go, but is not on the tower); before those, not detected
     (stack_cans found fewer cans than stand);
   - knocked over: cans tilted more than 20 degrees; unreported: cans left out of the tower that
@@ -170,10 +170,10 @@ def check(seed, count, region):
             cause = 'not detected'
         elif 'unreachable' in log:
             cause = 'unreachable'
+        elif any((n, True) in events and (n, False) not in events for n in moved):
+            cause = 'no release'  # first: a can left in the gripper spoils the moves after it
         elif any((n, True) not in events for n in moved):
             cause = 'no attach'
-        elif any((n, False) not in events for n in moved):
-            cause = 'no release'
         elif knocked:
             cause = 'tip-over'
         else:

@@ -55,7 +55,10 @@ std::vector<GraspDetector::Event> GraspDetector::update(const std::vector<Touch>
     s.count = gripped ? std::min(s.count + 1, options_.max_grip_count) : std::max(s.count - 1, 0);
     if (s.attached) {
       s.tightest = std::min(s.tightest, spread);
-      if (spread > s.tightest + options_.release_tolerance) {
+      const double opened = spread - s.tightest;
+      const bool untouched = it == by_object.end();
+      if (opened > options_.release_tolerance ||
+          (untouched && opened > GraspFixOptions::kOpenedOffFraction * options_.release_tolerance)) {
         s = State{};  // released: start again from nothing
         events.push_back({object, false});
       }

@@ -76,6 +76,26 @@ TEST(GraspDetector, ReleasesWhenTheGripperOpensBeyondTheToleranceFromItsTightest
   EXPECT_EQ(d.gripCount("can"), 0);
 }
 
+TEST(GraspDetector, AnObjectNoFingerTouchesIsLetGoOnceTheGripperOpensAFifthOfTheTolerance) {
+  GraspFixOptions o;
+  o.grip_count_threshold = 2;
+  o.release_tolerance = 0.005;
+  GraspDetector d(o);
+  d.update(pinch("can"), 0.0319);
+  ASSERT_EQ(d.update(pinch("can"), 0.0319).size(), 1u);
+  // The fingers off the can but the gripper no wider (they jitter): held.
+  EXPECT_TRUE(d.update({}, 0.0319 + 1e-6).empty());
+  EXPECT_TRUE(d.update({}, 0.0319 + 0.0009).empty());
+  // Opened 1.5 mm while still pressing on it (one finger): held.
+  EXPECT_TRUE(d.update({{"can", 0, Eigen::Vector3d(1, 0, 0)}}, 0.0334).empty());
+  EXPECT_TRUE(d.isAttached("can"));
+  // Opened 4.2 mm and off it (the can deep in the Katana's gripper): let go.
+  const auto events = d.update({}, 0.0361);
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_FALSE(events[0].attached);
+  EXPECT_FALSE(d.isAttached("can"));
+}
+
 TEST(GraspDetector, AReleasedObjectStartsAgainRatherThanFlickering) {
   GraspFixOptions o;
   o.grip_count_threshold = 3;
