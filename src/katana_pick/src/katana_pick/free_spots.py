@@ -14,10 +14,11 @@ import itertools
 import math
 from typing import List, Sequence, Tuple
 
+from katana_pick import arm_geometry
 from katana_pick.arm_geometry import KatanaGeometry
 from katana_pick.reach import ReachMap, reach_map
 from katana_pick.stacking import StackingOptions
-from katana_pick.tower_choice import MAX_CANS_FOR_EVERY_ORDER
+from katana_pick.tower_choice import MAX_CANS_FOR_EVERY_ORDER, placed
 
 GRID_STEP = 0.01   # m between the ranges tried (the best band can be 2 cm wide)
 BESIDE = 0.45      # rad past the outermost cans' bearings
@@ -28,14 +29,11 @@ def tower_size(reach: ReachMap, can_ranges: Sequence[float], r_tower: float, on_
     """The most cans one tower at range r_tower holds by the reach map, over every order: the cans
     at can_ranges carried to it (from level 0 if on_table, a free spot; else from level 1, the
     spot's own can counted)."""
-    best = 0
-    for order in itertools.permutations(range(len(can_ranges))):
-        level = 0 if on_table else 1
-        for i in order:
-            if reach.stackable(can_ranges[i], r_tower, level):
-                level += 1
-        best = max(best, level)
-    return best
+    first = 0 if on_table else 1
+
+    def fits(i, _tower, level):
+        return reach.stackable(can_ranges[i], r_tower, level)
+    return first + max(placed(order, 0, fits, first) for order in itertools.permutations(range(len(can_ranges))))
 
 
 def free_spots(cans: Sequence[Tuple[float, float]], geometry: KatanaGeometry = KatanaGeometry(),
@@ -48,7 +46,7 @@ def free_spots(cans: Sequence[Tuple[float, float]], geometry: KatanaGeometry = K
     # From a little nearer the base than the nearest can (levels reach higher there) to the
     # farthest can (a tower beyond every can takes no more of them) or the arm stretched out.
     near = max(min(can_ranges) - NEARER, options.retreat_distance + GRID_STEP)
-    far = min(max(can_ranges), geometry.upper_arm + geometry.forearm + geometry.wrist_to_tool)
+    far = min(max(can_ranges), arm_geometry.reach(geometry))
     grid = [round(near + k * GRID_STEP, 6) for k in range(int((far - near) / GRID_STEP) + 1)]
     reach = reach_map(geometry, sorted(set(grid + can_ranges)), max_level=len(cans) - 1, stacking=options)
     own = max(tower_size(reach, [r for j, r in enumerate(can_ranges) if j != t], can_ranges[t], False)
