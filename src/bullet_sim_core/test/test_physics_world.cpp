@@ -647,6 +647,37 @@ TEST_P(CanTower, StandsStillOnItsEndCaps) {
 
 INSTANTIATE_TEST_SUITE_P(Offsets, CanTower, ::testing::Values(0.0, 0.01));
 
+// A can set down tilted on another first touches it with its rim (Bullet's general convex
+// contact), then rocks onto its end cap (the cap-on-cap contact): the pair's contact switches
+// between the two ways, as when the Katana lets a can go onto the tower, and the can comes to
+// rest standing on the other.
+TEST(PhysicsWorld, ACanSetDownTiltedOnAnotherRocksOntoItsCapAndStands) {
+  PhysicsWorld world;
+  world.addModel(groundPlane(), Eigen::Isometry3d::Identity());
+  PhysicsModel& below = world.addModel(parse(canUrdf("below")), xyzRpy(0.3, 0.1, 0.0005, 0, 0, 0));
+  for (int i = 0; i < 500; ++i) world.step();
+  PhysicsModel& above = world.addModel(parse(canUrdf("above")), xyzRpy(0.3, 0.1, 0.125, 0.1, 0, 0));
+  for (int i = 0; i < 3000; ++i) world.step();
+  const Eigen::Vector3d at = above.pose().translation();
+  EXPECT_NEAR(at.z(), 0.12, 1e-3);
+  EXPECT_LT((at - Eigen::Vector3d(0.3, 0.1, 0.12)).head<2>().norm(), 0.01);
+  EXPECT_GT(above.pose().linear()(2, 2), std::cos(0.01));  // flat on the cap
+  EXPECT_LT(above.twist().linear.norm() + above.twist().angular.norm(), 1e-3);
+  EXPECT_NEAR(below.pose().translation().z(), 0.0, 1e-3);
+  // Set down with its centre past the rim, a can lands on the cap, tips over the edge (from the
+  // cap-on-cap contact to the general one) and falls to the floor.
+  PhysicsModel& off = world.addModel(parse(canUrdf("off")), xyzRpy(0.3 + 0.045, 0.1 - 0.3, 0.1205, 0, 0, 0));
+  PhysicsModel& under = world.addModel(parse(canUrdf("under")), xyzRpy(0.3, 0.1 - 0.3, 0.0005, 0, 0, 0));
+  for (int i = 0; i < 3000; ++i) world.step();
+  const Eigen::Vector3d fallen = off.pose().translation();
+  EXPECT_LT(fallen.z(), 0.04);  // its frame, at its bottom cap's centre: on the floor, standing or lying
+  EXPECT_GT(fallen.z(), -0.04);
+  EXPECT_GT(fallen.x(), 0.3 + 0.033);  // off the side it overhung
+  EXPECT_LT(fallen.x(), 0.3 + 0.3);
+  EXPECT_NEAR(under.pose().translation().z(), 0.0, 2e-3);  // the one below stays standing
+  EXPECT_GT(under.pose().linear()(2, 2), std::cos(0.05));
+}
+
 // Cans side by side still touch as cylinders (the contact the stacking case does not handle).
 TEST(PhysicsWorld, CansSideBySidePushApartToTouching) {
   PhysicsWorld world;
