@@ -22,7 +22,7 @@ def test_the_m_robot_example_drives_both_ways_on_sim_time(tmp_path, ray_cluster)
         # 0.2 m/s for 2 s: 0.4 m less the skid steer's start (0.35-0.37 m measured); never faster
         # than 0.2 m/s over the sim time between the two poses (a busy CI machine let it run 2.2 s)
         result = r["result"]
-        assert 2.0 <= result["measured_over_s"] < 3.0, result
+        assert 2.0 - 1e-6 <= result["measured_over_s"] < 3.0, result  # /clock can stand still for the last call
         assert 0.28 < result["distance"] <= 0.2 * result["measured_over_s"] + 0.01, result
         # sim time, not the wall clock: the world's start plus the 2 s driven
         assert 2.0 < r["sim_s"] < 60.0, r["sim_s"]
