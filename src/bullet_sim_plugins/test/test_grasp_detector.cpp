@@ -59,13 +59,21 @@ TEST(GraspDetector, ACountFallsWhileNotGrippedAndOneFingerNeverAttaches) {
   for (int i = 0; i < 20; ++i) EXPECT_TRUE(lonely.update({{"can", 1, Eigen::Vector3d(0, 1, 0)}}, 0.07).empty());
 }
 
-TEST(GraspDetector, ReleasesWhenTheGripperOpensBeyondTheToleranceFromItsTightest) {
+// A detector (attach after 2 checks, release_tolerance 5 mm) that has just attached "can",
+// pinched at the gripper spread `spread`.
+GraspDetector holdingTheCan(double spread) {
   GraspFixOptions o;
   o.grip_count_threshold = 2;
   o.release_tolerance = 0.005;
   GraspDetector d(o);
-  d.update(pinch("can"), 0.070);
-  ASSERT_EQ(d.update(pinch("can"), 0.070).size(), 1u);
+  d.update(pinch("can"), spread);
+  d.update(pinch("can"), spread);
+  return d;
+}
+
+TEST(GraspDetector, ReleasesWhenTheGripperOpensBeyondTheToleranceFromItsTightest) {
+  GraspDetector d = holdingTheCan(0.070);
+  ASSERT_TRUE(d.isAttached("can"));
   d.update(pinch("can"), 0.066);                      // squeezed 4 mm tighter after the attach
   EXPECT_TRUE(d.update(pinch("can"), 0.070).empty());  // 4 mm open from the tightest: still held
   EXPECT_TRUE(d.isAttached("can"));
@@ -77,12 +85,8 @@ TEST(GraspDetector, ReleasesWhenTheGripperOpensBeyondTheToleranceFromItsTightest
 }
 
 TEST(GraspDetector, AnObjectNoFingerTouchesIsLetGoOnceTheGripperOpensAFifthOfTheTolerance) {
-  GraspFixOptions o;
-  o.grip_count_threshold = 2;
-  o.release_tolerance = 0.005;
-  GraspDetector d(o);
-  d.update(pinch("can"), 0.0319);
-  ASSERT_EQ(d.update(pinch("can"), 0.0319).size(), 1u);
+  GraspDetector d = holdingTheCan(0.0319);
+  ASSERT_TRUE(d.isAttached("can"));
   // The fingers off the can but the gripper no wider (they jitter): held.
   EXPECT_TRUE(d.update({}, 0.0319 + 1e-6).empty());
   EXPECT_TRUE(d.update({}, 0.0319 + 0.0009).empty());
