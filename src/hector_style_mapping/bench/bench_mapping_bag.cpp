@@ -284,9 +284,8 @@ int main(int argc, char** argv) {
     last_stamp = stamp;
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     slam_poses.push_back({scan->header.stamp.toSec(), slam.pose()});
-    const hector_style_mapping::LoopClosure& loop = slam.loopClosure();
-    if (loop.keyframes() > static_cast<int>(keyframe_stamps.size())) keyframe_stamps.push_back(stamp);
-    anchored.append(slam.pose(), loop);
+    if (slam.keyframePoses().size() > keyframe_stamps.size()) keyframe_stamps.push_back(stamp);
+    anchored.append(slam.pose(), slam.keyframePoses());
     ++scans;
     beams = static_cast<long>(scan->ranges.size());
     total_ms += ms;
@@ -300,16 +299,18 @@ int main(int argc, char** argv) {
   std::printf("bag: %ld scans of %ld beams: mean %.3f ms, max %.3f ms per scan; final pose %.3f %.3f %.4f\n", scans,
               beams, total_ms / scans, max_ms, slam.pose().x, slam.pose().y, slam.pose().theta);
   std::printf("search: %d of %ld scans matched by the correlative search\n", slam.searchCount(), scans);
+  slam.finishLoopClosure();
+  const hector_style_mapping::LoopClosureStats loops = slam.loopClosureStats();
   if (options.loop_closure)
     std::printf("loop closure: %d of %d tries closed a loop over %d keyframes (%d good matches refused by the chain "
-                "check, %d as ambiguous)\n", slam.loopClosure().closures(), slam.loopClosure().attempts(),
-                slam.loopClosure().keyframes(), slam.loopClosure().inconsistent(), slam.loopClosure().ambiguous());
+                "check, %d as ambiguous)\n", static_cast<int>(loops.closures.size()), loops.attempts, loops.keyframes,
+                loops.inconsistent, loops.ambiguous);
   std::sort(truth.begin(), truth.end(), [](const StampedPose& a, const StampedPose& b) { return a.t < b.t; });
   // With loop closure the trajectory is the optimised one: each pose moves with its keyframe.
-  for (std::size_t i = 0; i < slam_poses.size(); ++i) slam_poses[i].pose = anchored.pose(i, slam.loopClosure());
+  for (std::size_t i = 0; i < slam_poses.size(); ++i) slam_poses[i].pose = anchored.pose(i, slam.keyframePoses());
   if (!truth_topic.empty()) printAccuracy(truth, slam_poses);
   if (!truth_topic.empty() && options.loop_closure)
-    printClosureErrors(truth, keyframe_stamps, slam.loopClosure().acceptedClosures());
+    printClosureErrors(truth, keyframe_stamps, loops.closures);
   if (!poses_path.empty()) writePoses(poses_path, truth, slam_poses);
   if (!map_path.empty()) writeMap(map_path, slam.map().finest());
   return 0;

@@ -29,7 +29,10 @@ Eigen::Matrix3d matchCovariance(const ScanMatchResult& match, const Eigen::Matri
   return 0.5 * (covariance + covariance.transpose());
 }
 
-SlamProcessor::SlamProcessor(const MapperOptions& options) : options_(options), map_(options) {}
+SlamProcessor::SlamProcessor(const MapperOptions& options, LoopClosureThreading threading)
+    : options_(options), map_(options), threading_(threading) {
+  reset();
+}
 
 void SlamProcessor::reset(const Pose2D& start) {
   map_.clear();
@@ -47,7 +50,12 @@ void SlamProcessor::reset(const Pose2D& start) {
   field_stale_ = true;
   recent_intervals_.clear();
   last_interval_ = 0.0;
-  loop_closure_ = LoopClosure{};
+  keyframe_poses_.clear();
+  keyframe_scans_.clear();
+  adoptions_ = 0;
+  const bool search = options_.search_window_linear > 0.0 && options_.search_window_angular > 0.0;
+  loop_closure_.reset();  // its work in hand is dropped, before a new one starts
+  if (search && options_.loop_closure) loop_closure_ = std::make_unique<LoopClosureWorker>(options_, threading_);
 }
 
 double motionPriorWeight(double weight, double last_interval, double interval) {
@@ -75,6 +83,10 @@ void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double s
   if (!hasFinitePoint(scan)) {
     map_updated_by_last_scan_ = false;
     return;
+  }
+
+  if (loop_closure_) {
+    if (std::optional<LoopClosureUpdate> closed = loop_closure_->take()) adopt(std::move(*closed));
   }
 
   const bool guess_usable =
@@ -137,27 +149,62 @@ void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double s
       field_stale_ = true;
     }
     ++map_update_count_;
-    if (search && options_.loop_closure && loop_closure_.addKeyframe(scan, pose_)) adoptOptimisedKeyframes();
+    if (loop_closure_) addKeyframe(scan);
   }
 }
 
-void SlamProcessor::adoptOptimisedKeyframes() {
-  const int keyframes = loop_closure_.keyframes();
-  const Pose2D before = pose_;
-  pose_ = loop_closure_.pose(keyframes - 1);
-  // The pose before moves with this one, so that the motion prior keeps the robot's velocity.
-  previous_pose_ = compose(pose_, between(before, previous_pose_));
-  last_map_update_pose_ = pose_;
-  map_stale_ = true;  // redrawn when next asked for: loops close every few keyframes, maps are read less often
+void SlamProcessor::addKeyframe(const ScanPoints& scan) {
+  const Pose2D step = keyframe_poses_.empty() ? pose_ : between(keyframe_poses_.back(), pose_);
+  keyframe_poses_.push_back(pose_);
+  keyframe_scans_.push_back(scan);
+  loop_closure_->submit(scan, step);
+  if (threading_ == LoopClosureThreading::kInline) {
+    if (std::optional<LoopClosureUpdate> closed = loop_closure_->take()) adopt(std::move(*closed));
+  }
+}
+
+void SlamProcessor::adopt(LoopClosureUpdate update) {
+  const std::size_t optimised = update.poses.size();
+  if (optimised == 0 || optimised > keyframe_poses_.size()) return;  // not ours (cannot happen)
+  // Everything after the last optimised keyframe keeps its place relative to it.
+  const Pose2D old_anchor = keyframe_poses_[optimised - 1];
+  const Pose2D& new_anchor = update.poses.back();
+  const auto moved = [&](const Pose2D& pose) { return compose(new_anchor, between(old_anchor, pose)); };
+  pose_ = moved(pose_);
+  previous_pose_ = moved(previous_pose_);  // so that the motion prior keeps the robot's velocity
+  last_map_update_pose_ = moved(last_map_update_pose_);
+  for (std::size_t i = 0; i < keyframe_poses_.size(); ++i)
+    keyframe_poses_[i] = i < optimised ? update.poses[i] : moved(keyframe_poses_[i]);
+  if (update.map) {
+    // Redrawn in the background up to the last optimised keyframe: the later ones on top, in order.
+    map_ = std::move(*update.map);
+    for (std::size_t i = optimised; i < keyframe_poses_.size(); ++i) map_.updateByScan(keyframe_scans_[i], keyframe_poses_[i]);
+    map_stale_ = false;
+  } else {
+    map_stale_ = true;  // redrawn when next asked for: loops close every few keyframes, maps are read less often
+  }
   window_.clear();
   unmapped_scan_.reset();
-  for (int i = std::max(keyframes - static_cast<int>(kSearchedScans), 0); i < keyframes; ++i)
-    window_.push_back({loop_closure_.pose(i), loop_closure_.scan(i)});
+  const std::size_t keyframes = keyframe_poses_.size();
+  for (std::size_t i = keyframes > kSearchedScans ? keyframes - kSearchedScans : 0; i < keyframes; ++i)
+    window_.push_back({keyframe_poses_[i], keyframe_scans_[i]});
   field_stale_ = true;
+  ++adoptions_;
+}
+
+LoopClosureStats SlamProcessor::loopClosureStats() const {
+  return loop_closure_ ? loop_closure_->stats() : LoopClosureStats{};
+}
+
+void SlamProcessor::finishLoopClosure() {
+  if (!loop_closure_) return;
+  loop_closure_->waitUntilIdle();
+  if (std::optional<LoopClosureUpdate> closed = loop_closure_->take()) adopt(std::move(*closed));
 }
 
 SearchWindow SlamProcessor::searchWindow(double seconds_since_last_scan) {
-  if (seconds_since_last_scan > 0.0 && std::isfinite(seconds_since_last_scan)) {
+  const bool known = seconds_since_last_scan > 0.0 && std::isfinite(seconds_since_last_scan);
+  if (known) {
     recent_intervals_.push_back(seconds_since_last_scan);
     if (recent_intervals_.size() > kRecentIntervals) recent_intervals_.erase(recent_intervals_.begin());
   }
@@ -165,7 +212,9 @@ SearchWindow SlamProcessor::searchWindow(double seconds_since_last_scan) {
   if (recent_intervals_.empty()) return window;
   std::vector<double> sorted = recent_intervals_;
   std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2), sorted.end());
-  const double interval = sorted[sorted.size() / 2];
+  // Never less than this scan's own interval: after scans were skipped (a node that could not keep up), the
+  // robot had that long to move.
+  const double interval = std::max(sorted[sorted.size() / 2], known ? seconds_since_last_scan : 0.0);
   window.linear = std::min(window.linear, kPlausibleSpeed * interval);
   window.angular = std::min(window.angular, kPlausibleTurnRate * interval);
   return window;
@@ -174,7 +223,7 @@ SearchWindow SlamProcessor::searchWindow(double seconds_since_last_scan) {
 const MultiResolutionMap& SlamProcessor::map() const {
   if (map_stale_) {
     map_.clear();
-    for (int i = 0; i < loop_closure_.keyframes(); ++i) map_.updateByScan(loop_closure_.scan(i), loop_closure_.pose(i));
+    for (std::size_t i = 0; i < keyframe_poses_.size(); ++i) map_.updateByScan(keyframe_scans_[i], keyframe_poses_[i]);
     map_stale_ = false;
   }
   return map_;

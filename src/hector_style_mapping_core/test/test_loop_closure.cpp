@@ -9,6 +9,8 @@
 
 #include "hector_style_mapping_core/anchored_trajectory.h"
 #include "hector_style_mapping_core/loop_closure.h"
+#include "hector_style_mapping_core/loop_closure_worker.h"
+#include "hector_style_mapping_core/slam_processor.h"
 #include "hector_style_mapping_core/testing/synthetic_world.h"
 
 namespace hector_style_mapping {
@@ -50,6 +52,12 @@ std::vector<Pose2D> tour() {
 Pose2D drifted(const Pose2D& step) { return {1.03 * step.x, 1.03 * step.y, step.theta + 0.1 * kDegree}; }
 
 double distance(const Pose2D& a, const Pose2D& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+std::vector<Pose2D> posesOf(const LoopClosure& loop) {
+  std::vector<Pose2D> poses;
+  for (int i = 0; i < loop.keyframes(); ++i) poses.push_back(loop.pose(i));
+  return poses;
+}
 
 // A pose graph cannot tell where along the loop a drift this even came from: it spreads it over the loop, so
 // the keyframes are right where the loop closes and off by less than half the drift in between.
@@ -114,32 +122,33 @@ TEST(LoopClosure, AnchoredTrajectoryFollowsTheClosedLoop) {
     loop.addKeyframe(world.scan(truth[k], laser, &rng), matched);
     const Pose2D half_step = between(truth[k], truth[k + 1]);
     const Pose2D seen = compose(loop.pose(static_cast<int>(k)), drifted({0.5 * half_step.x, 0.5 * half_step.y, 0.0}));
-    path.append(seen, loop);
+    path.append(seen, posesOf(loop));
     as_appended.push_back(seen);
     halfway_truth.push_back(compose(truth[k], {0.5 * half_step.x, 0.5 * half_step.y, 0.0}));
   }
   ASSERT_GE(loop.closures(), 3);
   ASSERT_EQ(path.size(), as_appended.size());
+  const std::vector<Pose2D> keyframes = posesOf(loop);
   double worst_as_appended = 0.0;
   for (std::size_t i = 0; i < path.size(); ++i) {
     worst_as_appended = std::max(worst_as_appended, distance(as_appended[i], halfway_truth[i]));
     // Its keyframe's error, and 2 cm for the half step's own 3 % and the keyframe's heading error over it.
     const double keyframe_error = distance(loop.pose(static_cast<int>(i)), truth[i]);
-    EXPECT_LT(distance(path.pose(i, loop), halfway_truth[i]), keyframe_error + 0.02) << "pose " << i;
+    EXPECT_LT(distance(path.pose(i, keyframes), halfway_truth[i]), keyframe_error + 0.02) << "pose " << i;
   }
   EXPECT_GT(worst_as_appended, 0.3);  // what the closures corrected (0.44 m)
 }
 
 // Without keyframes (loop closure off) the path is kept as given.
 TEST(LoopClosure, AnchoredTrajectoryWithoutKeyframesKeepsThePoses) {
-  const LoopClosure loop;
+  const std::vector<Pose2D> none;
   AnchoredTrajectory path;
-  path.append({1.0, 2.0, 0.5}, loop);
-  path.append({-3.0, 0.25, -2.0}, loop);
+  path.append({1.0, 2.0, 0.5}, none);
+  path.append({-3.0, 0.25, -2.0}, none);
   ASSERT_EQ(path.size(), 2u);
-  EXPECT_DOUBLE_EQ(path.pose(1, loop).x, -3.0);
-  EXPECT_DOUBLE_EQ(path.pose(1, loop).y, 0.25);
-  EXPECT_DOUBLE_EQ(path.pose(1, loop).theta, -2.0);
+  EXPECT_DOUBLE_EQ(path.pose(1, none).x, -3.0);
+  EXPECT_DOUBLE_EQ(path.pose(1, none).y, 0.25);
+  EXPECT_DOUBLE_EQ(path.pose(1, none).theta, -2.0);
   path.clear();
   EXPECT_EQ(path.size(), 0u);
 }
@@ -198,6 +207,116 @@ TEST(LoopClosure, AMatchTheChainCannotExplainIsRefused) {
   ASSERT_EQ(far.acceptedClosures().size(), 1u);
   EXPECT_EQ(far.acceptedClosures()[0].to, 20);
   EXPECT_NEAR(far.pose(25).x, 0.0, 0.02);  // not pulled 1.6 m along
+}
+
+// The worker in its own thread does the same work as inline: the same keyframes give the same closures and the
+// same optimised poses, to the last bit.
+TEST(LoopClosureWorker, InTheBackgroundFindsWhatInlineFinds) {
+  const testing::SyntheticWorld world = ring();
+  const std::vector<Pose2D> truth = tour();
+  testing::LaserConfig laser;
+  laser.beams = 360;
+  laser.range_noise_sigma = 0.01;
+  std::mt19937 rng(7);
+  const MapperOptions options;
+  LoopClosureWorker inline_worker(options, LoopClosureThreading::kInline);
+  LoopClosureWorker background(options, LoopClosureThreading::kBackground);
+  std::optional<LoopClosureUpdate> last_inline;
+  std::vector<Pose2D> dead_reckoned;  // the same drift with nothing to correct it
+  for (std::size_t k = 0; k < truth.size(); ++k) {
+    const Pose2D step = k == 0 ? truth[0] : drifted(between(truth[k - 1], truth[k]));
+    dead_reckoned.push_back(k == 0 ? step : compose(dead_reckoned.back(), step));
+    const ScanPoints scan = world.scan(truth[k], laser, &rng);
+    inline_worker.submit(scan, step);
+    background.submit(scan, step);
+    if (std::optional<LoopClosureUpdate> update = inline_worker.take()) {
+      EXPECT_FALSE(update->map);  // inline, the front end redraws when it reads the map
+      last_inline = std::move(update);
+    }
+  }
+  background.waitUntilIdle();
+  const std::optional<LoopClosureUpdate> last_background = background.take();
+  ASSERT_TRUE(last_inline);
+  ASSERT_TRUE(last_background);
+  EXPECT_FALSE(background.take());  // taken
+  const LoopClosureStats a = inline_worker.stats(), b = background.stats();
+  EXPECT_EQ(a.keyframes, static_cast<int>(truth.size()));
+  EXPECT_EQ(b.keyframes, a.keyframes);
+  EXPECT_GE(a.closures.size(), 3u);
+  EXPECT_EQ(b.closures.size(), a.closures.size());
+  EXPECT_EQ(b.attempts, a.attempts);
+  ASSERT_EQ(last_background->poses.size(), last_inline->poses.size());
+  double worst_error = 0.0, worst_drift = 0.0;
+  for (std::size_t i = 0; i < last_inline->poses.size(); ++i) {
+    EXPECT_EQ(last_background->poses[i].x, last_inline->poses[i].x) << i;
+    EXPECT_EQ(last_background->poses[i].theta, last_inline->poses[i].theta) << i;
+    worst_error = std::max(worst_error, distance(last_background->poses[i], truth[i]));
+    worst_drift = std::max(worst_drift, distance(dead_reckoned[i], truth[i]));
+  }
+  EXPECT_GT(worst_drift, 0.5);  // what there was to correct
+  EXPECT_LT(worst_error, 0.5 * worst_drift);  // the drift spread over the loop
+  // In the background the map comes redrawn from the optimised keyframes.
+  ASSERT_TRUE(last_background->map);
+  EXPECT_GT(last_background->map->finest().logOdds(
+                static_cast<int>((truth[0].x - last_background->map->finest().origin().x()) / options.map_resolution),
+                static_cast<int>((truth[0].y - 1.02 - last_background->map->finest().origin().y()) /
+                                 options.map_resolution)), 0.0);  // the outer wall below the start
+}
+
+// A SlamProcessor round the ring with loop closure in the background: the closures it adopts along the way
+// leave its map exactly as a redraw of its keyframes at their final poses (nothing missing, nothing drawn
+// twice, nothing half-written), and its keyframes as near the truth as inline.
+TEST(LoopClosureWorker, SlamProcessorInTheBackgroundKeepsItsMapTheRedrawOfItsKeyframes) {
+  const testing::SyntheticWorld world = ring();
+  const std::vector<Pose2D> truth = tour();
+  testing::LaserConfig laser;
+  laser.beams = 360;
+  laser.range_noise_sigma = 0.01;
+  MapperOptions options;
+  options.map_resolution = 0.05;
+  options.map_size = 512;
+  options.search_window_linear = 1.0;
+  options.search_window_angular = 1.7;  // the tour turns its corners in one step
+  options.loop_closure = true;
+  options.map_update_distance_thresh = 0.3;  // every scan of the tour a keyframe
+  for (const LoopClosureThreading threading : {LoopClosureThreading::kInline, LoopClosureThreading::kBackground}) {
+    std::mt19937 rng(11);
+    SlamProcessor slam(options, threading);
+    slam.reset(truth[0]);
+    std::vector<ScanPoints> mapped;
+    std::vector<Pose2D> mapped_truth;
+    double worst = 0.0;
+    for (const Pose2D& pose : truth) {
+      const ScanPoints scan = world.scan(pose, laser, &rng);
+      slam.update(scan);
+      if (slam.mapUpdatedByLastScan()) {
+        mapped.push_back(scan);
+        mapped_truth.push_back(pose);
+      }
+      slam.map();  // read between scans, as a node's map publisher does
+    }
+    slam.finishLoopClosure();
+    const std::vector<Pose2D>& keyframes = slam.keyframePoses();
+    ASSERT_EQ(keyframes.size(), mapped.size());
+    EXPECT_EQ(slam.loopClosureStats().keyframes, static_cast<int>(keyframes.size()));
+    EXPECT_GE(slam.loopClosureAdoptions(), 1);
+    MultiResolutionMap redrawn(options);
+    for (std::size_t i = 0; i < keyframes.size(); ++i) {
+      redrawn.updateByScan(mapped[i], keyframes[i]);
+      worst = std::max(worst, distance(keyframes[i], mapped_truth[i]));
+    }
+    const OccupancyGridMap& a = slam.map().finest();
+    const OccupancyGridMap& b = redrawn.finest();
+    int differing = 0, occupied = 0;
+    for (int y = 0; y < a.sizeY(); ++y)
+      for (int x = 0; x < a.sizeX(); ++x) {
+        differing += a.logOdds(x, y) != b.logOdds(x, y);
+        occupied += b.isOccupied(x, y);
+      }
+    EXPECT_EQ(differing, 0) << (threading == LoopClosureThreading::kInline ? "inline" : "background");
+    EXPECT_GT(occupied, 400);  // the ring's walls: 56 m of them, 0.05 m cells
+    EXPECT_LT(worst, 0.15);
+  }
 }
 
 }  // namespace

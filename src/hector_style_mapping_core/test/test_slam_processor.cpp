@@ -216,7 +216,7 @@ struct RunErrors {
 // Drives the maze with scan matching only (no guess), as with the lecture's setup without odometry.
 RunErrors driveTheMaze(const MapperOptions& options, double world_rotation, double noise_sigma, int beams,
                        unsigned seed, double step_length = 0.04, double max_turn = 0.06,
-                       double seconds_per_scan = 0.0, int short_stamp_every = 0) {
+                       double seconds_per_scan = 0.0, int short_stamp_every = 0, bool skip_runs = false) {
   const SyntheticWorld world = testing::smallMaze().rotated(world_rotation);
   const Pose2D turn{0.0, 0.0, world_rotation};
   std::vector<Eigen::Vector2d> waypoints;
@@ -238,11 +238,19 @@ RunErrors driveTheMaze(const MapperOptions& options, double world_rotation, doub
   RunErrors errors;
   double sum_translation = 0.0;
   double sum_rotation = 0.0;
+  int processed = 0;
+  Pose2D last_truth = start;
   for (std::size_t i = 0; i < trajectory.size(); ++i) {
     const Pose2D& truth = trajectory[i];
+    // skip_runs: 9 scans of every 30 never reach the mapper, as from a node that could not keep up; the scan
+    // after them comes 10 intervals after the last one matched.
+    if (skip_runs && i % 30 >= 21) continue;
+    const double interval = skip_runs && i % 30 == 0 && i > 0 ? 10.0 * seconds_per_scan : seconds_per_scan;
+    ++processed;
+    last_truth = truth;
     // Every short_stamp_every-th scan claims to come 1 ms after the last, as a log's odd stamps do.
     const bool short_stamp = short_stamp_every > 0 && i % static_cast<std::size_t>(short_stamp_every) == 0;
-    processor.update(world.scan(truth, laser, &rng), nullptr, short_stamp ? 0.001 : seconds_per_scan);
+    processor.update(world.scan(truth, laser, &rng), nullptr, short_stamp ? 0.001 : interval);
     const double translation = translationError(processor.pose(), truth);
     const double rotation = rotationError(processor.pose(), truth);
     sum_translation += translation * translation;
@@ -250,9 +258,9 @@ RunErrors driveTheMaze(const MapperOptions& options, double world_rotation, doub
     errors.max_translation = std::max(errors.max_translation, translation);
     errors.max_rotation = std::max(errors.max_rotation, rotation);
   }
-  errors.scans = static_cast<int>(trajectory.size());
-  errors.final_translation = translationError(processor.pose(), trajectory.back());
-  errors.final_rotation = rotationError(processor.pose(), trajectory.back());
+  errors.scans = processed;
+  errors.final_translation = translationError(processor.pose(), last_truth);
+  errors.final_rotation = rotationError(processor.pose(), last_truth);
   errors.rms_translation = std::sqrt(sum_translation / errors.scans);
   errors.rms_rotation = std::sqrt(sum_rotation / errors.scans);
   errors.map_updates = processor.mapUpdateCount();
@@ -372,6 +380,20 @@ TEST(SlamProcessor, OddStampsDoNotShrinkTheSearchWindow) {
   EXPECT_GT(searched.scans, 25);
   EXPECT_LT(searched.max_translation, 0.05);
   EXPECT_LT(searched.max_rotation, 1.0 * kDegree);
+}
+
+// Scans a busy node skipped: ten a second, 0.04 m and up to 0.04 rad apart, but 9 of every 30 never matched,
+// so that the scan after them lies 0.4 m and up to 0.4 rad from the last one matched. The search's window
+// is sized to the time since the last match (1 s: 1.5 m and pi rad, capped at 1.0 m and 0.6 rad), not to
+// the usual interval (0.1 s: 0.15 m and 0.31 rad, where the jump is out of reach).
+TEST(SlamProcessor, AfterSkippedScansTheWindowCoversTheTimeSinceTheLastMatch) {
+  for (const double world_rotation : {0.0, 0.43}) {
+    const RunErrors searched =
+        driveTheMaze(searching({}), world_rotation, 0.015, 720, 12, 0.04, 0.04, 0.1, 0, true);
+    EXPECT_GT(searched.scans, 200);
+    EXPECT_LT(searched.max_translation, 0.05);
+    EXPECT_LT(searched.max_rotation, 1.0 * kDegree);
+  }
 }
 
 // At the simulated robots' pace (scans 0.04 m apart, ten a second) the search changes little: the

@@ -62,7 +62,8 @@ void ScanTiming::add(double ms) {
 
 std::string ScanTiming::summary() const {
   char text[128];
-  std::snprintf(text, sizeof text, "%ld scans processed, %.3f ms mean, %.3f ms max per scan", scans, meanMs(), max_ms);
+  std::snprintf(text, sizeof text, "%ld scans processed, %.3f ms mean, %.3f ms max per scan, %ld skipped", scans,
+                meanMs(), max_ms, skipped);
   return text;
 }
 
@@ -70,14 +71,18 @@ MappingNode::MappingNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     : options_(loadOrThrow(private_nh)),
       nh_(nh),
       private_nh_(private_nh),
-      slam_(options_.mapper),
+      // Loop closure's searches, optimisation and map redraw off the scan path: a live node never waits for them.
+      slam_(options_.mapper, LoopClosureThreading::kBackground),
       tf_buffer_(ros::Duration(30.0)),
       tf_listener_(tf_buffer_) {
   for (const std::string& name : unknownParameters(private_nh_))
     ROS_WARN("hector_mapping: ignored %s: not a parameter of hector_mapping", name.c_str());
 
-  scan_subscriber_ = nh_.subscribe(options_.scan_topic, options_.scan_subscriber_queue_size,
-                                   &MappingNode::scanCallback, this);
+  // The subscriber's own thread only queues scans: it is never busy, so ROS never drops one unseen.
+  ros::SubscribeOptions scans = ros::SubscribeOptions::create<sensor_msgs::LaserScan>(
+      options_.scan_topic, options_.scan_subscriber_queue_size,
+      [this](const sensor_msgs::LaserScan::ConstPtr& scan) { scanCallback(scan); }, ros::VoidPtr(), &scan_callbacks_);
+  scan_subscriber_ = nh_.subscribe(scans);
   sys_command_subscriber_ = nh_.subscribe(options_.sys_msg_topic, 2, &MappingNode::sysCommandCallback, this);
   initial_pose_subscriber_ = nh_.subscribe("initialpose", 2, &MappingNode::initialPoseCallback, this);
 
@@ -99,12 +104,92 @@ MappingNode::MappingNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     transform_timer_ = nh_.createWallTimer(ros::WallDuration(options_.transform_pub_period),
                                            [this](const ros::WallTimerEvent&) { republishMapTransform(); });
   publishMap();  // the empty map, so that latecomers find one
+  last_behind_report_ = ros::WallTime::now();
+  scan_path_ = std::thread([this] { matchScans(); });
+  scan_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &scan_callbacks_);
+  scan_spinner_->start();
 
   const MapperOptions& m = options_.mapper;
   ROS_INFO("hector_mapping: %d x %d cells of %.3f m (%d levels), map frame origin at (%.2f, %.2f) of the map; "
            "scans on %s; tf %s -> %s%s", m.map_size, m.map_size, m.map_resolution, m.map_multi_res_levels,
            m.map_start_x, m.map_start_y, nh_.resolveName(options_.scan_topic).c_str(), options_.map_frame.c_str(),
            options_.odom_frame.c_str(), options_.pub_map_odom_transform ? "" : " (not published)");
+}
+
+MappingNode::~MappingNode() {
+  scan_spinner_->stop();
+  {
+    std::lock_guard<std::mutex> lock(queue_mutex_);
+    stopping_ = true;
+  }
+  scan_waiting_.notify_all();
+  scan_path_.join();
+}
+
+ScanTiming MappingNode::timing() {
+  ScanTiming timing;
+  {
+    std::lock_guard<std::mutex> lock(state_mutex_);
+    timing = timing_;
+  }
+  std::lock_guard<std::mutex> lock(queue_mutex_);
+  timing.skipped = skipped_total_;
+  return timing;
+}
+
+void MappingNode::scanCallback(const sensor_msgs::LaserScan::ConstPtr& scan) {
+  {
+    std::lock_guard<std::mutex> lock(queue_mutex_);
+    if (static_cast<int>(waiting_scans_.size()) >= options_.scan_subscriber_queue_size) {
+      waiting_scans_.pop_front();
+      ++skipped_since_report_;
+      ++skipped_total_;
+    }
+    waiting_scans_.push_back(scan);
+  }
+  scan_waiting_.notify_one();
+}
+
+void MappingNode::matchScans() {
+  while (true) {
+    sensor_msgs::LaserScan::ConstPtr scan;
+    {
+      std::unique_lock<std::mutex> lock(queue_mutex_);
+      scan_waiting_.wait(lock, [this] { return stopping_ || !waiting_scans_.empty(); });
+      if (stopping_) return;
+      scan = waiting_scans_.front();
+      waiting_scans_.pop_front();
+    }
+    {
+      std::lock_guard<std::mutex> lock(state_mutex_);
+      processScan(*scan);
+    }
+    reportFallingBehind(*scan);
+  }
+}
+
+void MappingNode::reportFallingBehind(const sensor_msgs::LaserScan& scan) {
+  const ros::WallTime now = ros::WallTime::now();
+  const double seconds = (now - last_behind_report_).toSec();
+  if (seconds < 1.0) return;
+  long skipped, total;
+  {
+    std::lock_guard<std::mutex> lock(queue_mutex_);
+    skipped = skipped_since_report_;
+    total = skipped_total_;
+    skipped_since_report_ = 0;
+  }
+  last_behind_report_ = now;
+  if (skipped == 0) return;
+  double meanMs;
+  {
+    std::lock_guard<std::mutex> lock(state_mutex_);
+    meanMs = timing_.meanMs();
+  }
+  ROS_WARN("hector_mapping: cannot keep up with the scans on %s: %ld skipped in the last %.1f s, %ld in all (when "
+           "scan_subscriber_queue_size, %d, are waiting, the oldest is dropped); the scan just matched is %.3f s "
+           "old; %.1f ms a scan on average", scan_subscriber_.getTopic().c_str(), skipped, seconds, total,
+           options_.scan_subscriber_queue_size, (ros::Time::now() - scan.header.stamp).toSec(), meanMs);
 }
 
 bool MappingNode::acceptStamp(const ros::Time& stamp) {
@@ -143,15 +228,15 @@ bool MappingNode::laserInBase(const sensor_msgs::LaserScan& scan, Eigen::Isometr
   }
 }
 
-void MappingNode::scanCallback(const sensor_msgs::LaserScan::ConstPtr& scan) {
-  const ros::Time stamp = scan->header.stamp;
+void MappingNode::processScan(const sensor_msgs::LaserScan& scan) {
+  const ros::Time stamp = scan.header.stamp;
   const ros::Time previous_stamp = scan_stamps_.last();
   if (!acceptStamp(stamp)) return;
   // The scan rate sizes the correlative search's window; 0 (the first scan, a clock restart): not known.
   const double seconds_since_last_scan =
       !previous_stamp.isZero() && stamp > previous_stamp ? (stamp - previous_stamp).toSec() : 0.0;
   Eigen::Isometry3d laser_in_base = Eigen::Isometry3d::Identity();
-  if (options_.use_tf_scan_transformation && !laserInBase(*scan, &laser_in_base)) return;
+  if (options_.use_tf_scan_transformation && !laserInBase(scan, &laser_in_base)) return;
 
   // Before the timing: it may wait for the odometry's tf. Without the prediction the lookup waits
   // until after the match, as before it existed.
@@ -164,7 +249,7 @@ void MappingNode::scanCallback(const sensor_msgs::LaserScan::ConstPtr& scan) {
                              tf2::getYaw(odometry->transform.rotation)};
 
   const auto start = std::chrono::steady_clock::now();
-  const ScanConversionReport report = scanToPoints(*scan, laser_in_base, options_.filter, &scan_points_);
+  const ScanConversionReport report = scanToPoints(scan, laser_in_base, options_.filter, &scan_points_);
   const std::string topic = scan_subscriber_.getTopic();
   if (!report.error.empty()) {
     ROS_WARN_THROTTLE(5.0, "hector_mapping: scan on %s dropped: %s", topic.c_str(), report.error.c_str());
@@ -298,17 +383,17 @@ void MappingNode::republishMapTransform() {
   // As hector_mapping: the latest map -> odom, stamped now, so that tf users are never left behind
   // between scans. Never twice at one stamp (tf would complain), e.g. while the simulation is paused.
   const ros::Time now = ros::Time::now();
+  std::lock_guard<std::mutex> lock(state_mutex_);
   if (!have_map_transform_ || now <= map_transform_.header.stamp) return;
   map_transform_.header.stamp = now;
   tf_broadcaster_.sendTransform(map_transform_);
 }
 
 void MappingNode::followLoopClosure() {
-  const LoopClosure& loops = slam_.loopClosure();
-  if (loops.closures() == trajectory_closures_) return;
-  trajectory_closures_ = loops.closures();
+  if (slam_.loopClosureAdoptions() == trajectory_closures_) return;
+  trajectory_closures_ = slam_.loopClosureAdoptions();
   for (std::size_t i = 0; i < trajectory_.poses.size() && i < anchored_trajectory_.size(); ++i)
-    trajectory_.poses[i].pose = poseMessage(anchored_trajectory_.pose(i, loops));
+    trajectory_.poses[i].pose = poseMessage(anchored_trajectory_.pose(i, slam_.keyframePoses()));
 }
 
 void MappingNode::appendTrajectory(const ros::Time& stamp) {
@@ -326,20 +411,30 @@ void MappingNode::appendTrajectory(const ros::Time& stamp) {
   p.header.frame_id = options_.map_frame;
   p.pose = poseMessage(pose);
   trajectory_.poses.push_back(p);
-  anchored_trajectory_.append(pose, slam_.loopClosure());
+  anchored_trajectory_.append(pose, slam_.keyframePoses());
 }
 
 void MappingNode::publishMap() {
   const ros::Time now = ros::Time::now();
-  trajectory_.header.stamp = now;
-  trajectory_publisher_.publish(trajectory_);
-  // As hector_mapping: the map goes out every map_pub_period with the current stamp, converted
-  // again only when it changed. The stamp tells subscribers the map is up to date at that time
-  // (an explorer waiting for a map made after its robot arrived, say).
-  if (slam_.mapUpdateCount() != published_map_updates_) {
-    published_map_updates_ = slam_.mapUpdateCount();
-    map_message_.header.frame_id = options_.map_frame;
-    fillOccupancyGrid(slam_.map().finest(), &map_message_);
+  nav_msgs::Path trajectory;
+  bool map_changed = false;
+  {
+    // Only the conversion holds the scan path up (a few ms for a 2048-cell map); publishing does not.
+    std::lock_guard<std::mutex> lock(state_mutex_);
+    trajectory = trajectory_;
+    // As hector_mapping: the map goes out every map_pub_period with the current stamp, converted
+    // again only when it changed. The stamp tells subscribers the map is up to date at that time
+    // (an explorer waiting for a map made after its robot arrived, say).
+    if (slam_.mapUpdateCount() != published_map_updates_) {
+      published_map_updates_ = slam_.mapUpdateCount();
+      map_message_.header.frame_id = options_.map_frame;
+      fillOccupancyGrid(slam_.map().finest(), &map_message_);
+      map_changed = true;
+    }
+  }
+  trajectory.header.stamp = now;
+  trajectory_publisher_.publish(trajectory);
+  if (map_changed) {
     map_message_.info.map_load_time = now;
     map_metadata_publisher_.publish(map_message_.info);
   }
@@ -350,21 +445,29 @@ void MappingNode::publishMap() {
 bool MappingNode::dynamicMapService(nav_msgs::GetMap::Request&, nav_msgs::GetMap::Response& response) {
   response.map.header.stamp = ros::Time::now();
   response.map.header.frame_id = options_.map_frame;
+  std::lock_guard<std::mutex> lock(state_mutex_);
   fillOccupancyGrid(slam_.map().finest(), &response.map);
   response.map.info.map_load_time = response.map.header.stamp;
   return true;
 }
 
 void MappingNode::reset(const std::string& why) {
+  {
+    std::lock_guard<std::mutex> lock(state_mutex_);
+    resetState();
+  }
+  publishMap();  // the empty map goes out now
+  ROS_INFO("hector_mapping: map and pose reset (%s)", why.c_str());
+}
+
+void MappingNode::resetState() {
   slam_.reset();
   last_scan_odometry_.reset();
   trajectory_.poses.clear();
   anchored_trajectory_.clear();
   trajectory_closures_ = 0;
   have_initial_pose_ = false;
-  published_map_updates_ = -1;  // the empty map goes out now
-  publishMap();
-  ROS_INFO("hector_mapping: map and pose reset (%s)", why.c_str());
+  published_map_updates_ = -1;  // converted again, empty
 }
 
 bool MappingNode::resetMapService(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
@@ -392,6 +495,7 @@ void MappingNode::initialPoseCallback(const geometry_msgs::PoseWithCovarianceSta
       return;
     }
   }
+  std::lock_guard<std::mutex> lock(state_mutex_);
   initial_pose_ = {in_map.pose.position.x, in_map.pose.position.y, tf2::getYaw(in_map.pose.orientation)};
   have_initial_pose_ = true;
   ROS_INFO("hector_mapping: next scan starts from the initial pose x %.3f y %.3f yaw %.3f", initial_pose_.x,

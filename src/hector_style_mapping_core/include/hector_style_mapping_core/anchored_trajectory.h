@@ -4,7 +4,6 @@
 #include <cstddef>
 #include <vector>
 
-#include "hector_style_mapping_core/loop_closure.h"
 #include "hector_style_mapping_core/pose_2d.h"
 
 namespace hector_style_mapping {
@@ -15,10 +14,11 @@ namespace hector_style_mapping {
 // keyframes), stay as given.
 class AnchoredTrajectory {
  public:
-  void append(const Pose2D& pose, const LoopClosure& loops);
-  // Pose `i` (in the order appended) from its keyframe's current estimate in `loops`, the one it was appended
-  // with.
-  Pose2D pose(std::size_t i, const LoopClosure& loops) const;
+  // `keyframes`: the keyframes' current poses (SlamProcessor::keyframePoses()).
+  void append(const Pose2D& pose, const std::vector<Pose2D>& keyframes);
+  // Pose `i` (in the order appended) from its keyframe's current estimate in `keyframes`, the one it was
+  // appended with.
+  Pose2D pose(std::size_t i, const std::vector<Pose2D>& keyframes) const;
   std::size_t size() const { return anchors_.size(); }
   void clear() { anchors_.clear(); }
 

@@ -1,6 +1,7 @@
 #ifndef HECTOR_STYLE_MAPPING_CORE_SLAM_PROCESSOR_H
 #define HECTOR_STYLE_MAPPING_CORE_SLAM_PROCESSOR_H
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "hector_style_mapping_core/correlative_search.h"
 #include "hector_style_mapping_core/likelihood_field.h"
 #include "hector_style_mapping_core/loop_closure.h"
+#include "hector_style_mapping_core/loop_closure_worker.h"
 #include "hector_style_mapping_core/mapper_options.h"
 #include "hector_style_mapping_core/multi_resolution_map.h"
 #include "hector_style_mapping_core/pose_2d.h"
@@ -33,8 +35,11 @@ class SlamProcessor {
   static constexpr double kUnconstrainedTranslationVariance = 100.0;
   static constexpr double kUnconstrainedRotationVariance = M_PI * M_PI;
 
-  // Throws std::invalid_argument with validate()'s message if the options are not valid.
-  explicit SlamProcessor(const MapperOptions& options);
+  // Throws std::invalid_argument with validate()'s message if the options are not valid. `threading`: where
+  // loop closure works (LoopClosureWorker); in the background, a closed loop is adopted at the first scan
+  // after it was found, with the map already redrawn.
+  explicit SlamProcessor(const MapperOptions& options,
+                         LoopClosureThreading threading = LoopClosureThreading::kInline);
 
   // The fastest a robot the mapper serves plausibly moves and turns: with the scan interval, they size the
   // correlative search's window (up to the options' search_window_*). Brisk walking pace and half a turn a
@@ -61,9 +66,10 @@ class SlamProcessor {
   //
   // The window: the motion a robot could plausibly make (kPlausibleSpeed, kPlausibleTurnRate) over the scan
   // interval, capped by search_window_linear / _angular. The interval is the median of the recent
-  // `seconds_since_last_scan` (> 0; 0 when not known), not the last one: real logs' stamps are not to be trusted
-  // scan by scan (Radish's Intel log has scans 0.0 s apart with 30 degrees of turn between them). With none
-  // known, the whole configured window.
+  // `seconds_since_last_scan` (> 0; 0 when not known), or this scan's own if longer: real logs' stamps are not
+  // to be trusted scan by scan (Radish's Intel log has scans 0.0 s apart with 30 degrees of turn between them),
+  // but after a gap (scans a busy node skipped, a pause) the robot had that long to move. With none known, the
+  // whole configured window.
   //
   // A scan without finite points changes nothing (pose, covariance and map stay; mapUpdatedByLastScan() becomes
   // false), even when a guess is given. A guess with a non-finite field is ignored. Keep the scan's points in
@@ -72,8 +78,16 @@ class SlamProcessor {
 
   // Scans matched by the correlative search since construction / the last reset(); for diagnostics.
   int searchCount() const { return search_count_; }
-  // The keyframes and pose graph, with the options' loop_closure (empty without).
-  const LoopClosure& loopClosure() const { return loop_closure_; }
+  // With the options' loop_closure, every scan that updated the map is a keyframe: their poses as the front end
+  // knows them (optimised up to the last closed loop it adopted, the later ones moved with them). Empty without.
+  const std::vector<Pose2D>& keyframePoses() const { return keyframe_poses_; }
+  // Closed loops adopted since construction / the last reset(): when it changes, keyframePoses() moved.
+  int loopClosureAdoptions() const { return adoptions_; }
+  // What loop closure has done (all zero without).
+  LoopClosureStats loopClosureStats() const;
+  // In the background: waits until every keyframe has been through loop closure and adopts what it found,
+  // as at the end of a log. Inline: nothing to wait for.
+  void finishLoopClosure();
 
   // The base frame's pose in the map frame after the last scan (the start pose before any).
   const Pose2D& pose() const { return pose_; }
@@ -107,8 +121,11 @@ class SlamProcessor {
 
  private:
   bool movedEnoughForMapUpdate() const;
-  // After a loop closed: the pose, the search's scans and the map from the optimised keyframes.
-  void adoptOptimisedKeyframes();
+  // A closed loop: the keyframes it optimised take their new poses, and the pose, the later keyframes, the
+  // search's scans and the map move with them.
+  void adopt(LoopClosureUpdate update);
+  // Hands the scan just mapped to loop closure as a keyframe (and adopts a closure found inline).
+  void addKeyframe(const ScanPoints& scan);
   // The search's window for this scan; records the interval.
   SearchWindow searchWindow(double seconds_since_last_scan);
   // Gauss-Newton from `start` through every level, coarsest first; the finest level's match.
@@ -135,7 +152,11 @@ class SlamProcessor {
   std::optional<PlacedScan> unmapped_scan_;
   LikelihoodField field_;
   bool field_stale_ = true;
-  LoopClosure loop_closure_;
+  LoopClosureThreading threading_;
+  std::unique_ptr<LoopClosureWorker> loop_closure_;  // null without the options' loop_closure and search
+  std::vector<Pose2D> keyframe_poses_;
+  std::vector<ScanPoints> keyframe_scans_;  // the map is redrawn from these
+  int adoptions_ = 0;
 };
 
 // Gauss-Newton from `start` through every level of `map`, coarsest first, with SlamProcessor's iteration caps;

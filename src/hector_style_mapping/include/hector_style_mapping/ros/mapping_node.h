@@ -1,15 +1,20 @@
 #ifndef HECTOR_STYLE_MAPPING_ROS_MAPPING_NODE_H
 #define HECTOR_STYLE_MAPPING_ROS_MAPPING_NODE_H
 
+#include <condition_variable>
+#include <deque>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
 
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <nav_msgs/GetMap.h>
 #include <nav_msgs/OccupancyGrid.h>
 #include <nav_msgs/Path.h>
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <sensor_msgs/LaserScan.h>
 #include <std_msgs/String.h>
@@ -31,21 +36,36 @@ struct ScanTiming {
   double total_ms = 0.0;
   double max_ms = 0.0;
   void add(double ms);
+  long skipped = 0;  // dropped from a full scan queue
   double meanMs() const { return scans ? total_ms / scans : 0.0; }
-  // "N scans processed, X ms mean, Y ms max per scan" (scripts/bench_mapping.py reads it).
+  // "N scans processed, X ms mean, Y ms max per scan, K skipped" (scripts/bench_mapping.py reads it).
   std::string summary() const;
 };
 
 // hector_mapping's ROS interface around SlamProcessor (topics, tf, services: see the package README).
+//
+// Threads: scans are matched in a thread of their own (the scan path), loop closure works in another
+// (SlamProcessor's background worker), and everything else (map publishing, services, the other topics) runs
+// in the thread that calls ros::spin(); state_mutex_ is held by each in turn. A scan waits in a queue of
+// scan_subscriber_queue_size scans (upstream's meaning: how many may wait while the node is busy); when it is
+// full, the oldest waiting is dropped, and the node says so once a second (scans skipped, how far behind).
+// The next scan matched then has a search window sized to the time since the last match.
 class MappingNode {
  public:
   // Throws std::invalid_argument, naming every bad parameter, when the configuration cannot be used.
   MappingNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
+  ~MappingNode();  // stops the scan path (the scans still waiting are dropped)
 
-  const ScanTiming& timing() const { return timing_; }
+  ScanTiming timing();
 
  private:
+  // Subscriber thread: queues the scan (dropping the oldest waiting when the queue is full).
   void scanCallback(const sensor_msgs::LaserScan::ConstPtr& scan);
+  // The scan path: takes the scans from the queue, in order, and matches each.
+  void matchScans();
+  void processScan(const sensor_msgs::LaserScan& scan);
+  // Once a second while scans are being skipped: how many, and how old the scan just matched is.
+  void reportFallingBehind(const sensor_msgs::LaserScan& scan);
   void sysCommandCallback(const std_msgs::String::ConstPtr& command);
   void initialPoseCallback(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& pose);
   bool dynamicMapService(nav_msgs::GetMap::Request& request, nav_msgs::GetMap::Response& response);
@@ -66,6 +86,7 @@ class MappingNode {
   // After a loop closed: the trajectory's poses from their keyframes' new estimates, as the map.
   void followLoopClosure();
   void reset(const std::string& why);
+  void resetState();  // reset() under state_mutex_
 
   NodeOptions options_;
   ros::NodeHandle nh_, private_nh_;
@@ -89,11 +110,26 @@ class MappingNode {
   bool have_map_transform_ = false;
   nav_msgs::Path trajectory_;
   AnchoredTrajectory anchored_trajectory_;  // trajectory_'s poses, held to the keyframes
-  int trajectory_closures_ = 0;  // LoopClosure::closures() when trajectory_ last followed them
+  int trajectory_closures_ = 0;  // SlamProcessor::loopClosureAdoptions() when trajectory_ last followed them
   int published_map_updates_ = -1;  // SlamProcessor::mapUpdateCount() when map_message_ was filled
   nav_msgs::OccupancyGrid map_message_;  // the last map converted, re-sent with a new stamp while unchanged
   ScanPoints scan_points_;  // reused: no allocation per scan
   ScanTiming timing_;
+
+  // Guards everything above that both the scan path and the ros::spin() thread touch.
+  mutable std::mutex state_mutex_;
+
+  // The scan queue, filled by the subscriber's own thread, emptied by the scan path.
+  std::mutex queue_mutex_;
+  std::condition_variable scan_waiting_;
+  std::deque<sensor_msgs::LaserScan::ConstPtr> waiting_scans_;
+  bool stopping_ = false;
+  long skipped_since_report_ = 0;  // under queue_mutex_
+  long skipped_total_ = 0;         // under queue_mutex_
+  ros::WallTime last_behind_report_;
+  ros::CallbackQueue scan_callbacks_;
+  std::unique_ptr<ros::AsyncSpinner> scan_spinner_;
+  std::thread scan_path_;
 };
 
 }  // namespace hector_style_mapping
