@@ -18,6 +18,8 @@
 namespace hector_style_mapping {
 namespace {
 
+// Scans ROS itself may hold for the subscriber's thread (see the constructor).
+constexpr int kTransportQueue = 1000;
 // How long a scan may wait for the tf it needs.
 const ros::Duration kTfWait(0.1);
 // The trajectory gets a pose when the robot moved this far or turned this much since the last one.
@@ -78,9 +80,10 @@ MappingNode::MappingNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   for (const std::string& name : unknownParameters(private_nh_))
     ROS_WARN("hector_mapping: ignored %s: not a parameter of hector_mapping", name.c_str());
 
-  // The subscriber's own thread only queues scans: it is never busy, so ROS never drops one unseen.
+  // The subscriber's own thread only moves scans to waiting_scans_, where the queue policy is kept and counted;
+  // ROS's own queue is longer, so that a burst the thread has not yet seen is not dropped uncounted.
   ros::SubscribeOptions scans = ros::SubscribeOptions::create<sensor_msgs::LaserScan>(
-      options_.scan_topic, options_.scan_subscriber_queue_size,
+      options_.scan_topic, std::max(options_.scan_subscriber_queue_size, kTransportQueue),
       [this](const sensor_msgs::LaserScan::ConstPtr& scan) { scanCallback(scan); }, ros::VoidPtr(), &scan_callbacks_);
   scan_subscriber_ = nh_.subscribe(scans);
   sys_command_subscriber_ = nh_.subscribe(options_.sys_msg_topic, 2, &MappingNode::sysCommandCallback, this);
@@ -105,6 +108,7 @@ MappingNode::MappingNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
                                            [this](const ros::WallTimerEvent&) { republishMapTransform(); });
   publishMap();  // the empty map, so that latecomers find one
   last_behind_report_ = ros::WallTime::now();
+  behind_timer_ = nh_.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) { reportFallingBehind(); });
   scan_path_ = std::thread([this] { matchScans(); });
   scan_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &scan_callbacks_);
   scan_spinner_->start();
@@ -146,6 +150,7 @@ void MappingNode::scanCallback(const sensor_msgs::LaserScan::ConstPtr& scan) {
       ++skipped_total_;
     }
     waiting_scans_.push_back(scan);
+    newest_stamp_ = std::max(newest_stamp_, scan->header.stamp);
   }
   scan_waiting_.notify_one();
 }
@@ -159,37 +164,38 @@ void MappingNode::matchScans() {
       if (stopping_) return;
       scan = waiting_scans_.front();
       waiting_scans_.pop_front();
+      most_behind_ = std::max(most_behind_, (newest_stamp_ - scan->header.stamp).toSec());
     }
-    {
-      std::lock_guard<std::mutex> lock(state_mutex_);
-      processScan(*scan);
-    }
-    reportFallingBehind(*scan);
+    std::lock_guard<std::mutex> lock(state_mutex_);
+    processScan(*scan);
   }
 }
 
-void MappingNode::reportFallingBehind(const sensor_msgs::LaserScan& scan) {
+void MappingNode::reportFallingBehind() {
   const ros::WallTime now = ros::WallTime::now();
   const double seconds = (now - last_behind_report_).toSec();
-  if (seconds < 1.0) return;
+  last_behind_report_ = now;
   long skipped, total;
+  double most_behind;
   {
     std::lock_guard<std::mutex> lock(queue_mutex_);
     skipped = skipped_since_report_;
     total = skipped_total_;
+    most_behind = most_behind_;
     skipped_since_report_ = 0;
+    most_behind_ = 0.0;
   }
-  last_behind_report_ = now;
   if (skipped == 0) return;
-  double meanMs;
+  double mean_ms;
   {
     std::lock_guard<std::mutex> lock(state_mutex_);
-    meanMs = timing_.meanMs();
+    mean_ms = timing_.meanMs();
   }
   ROS_WARN("hector_mapping: cannot keep up with the scans on %s: %ld skipped in the last %.1f s, %ld in all (when "
-           "scan_subscriber_queue_size, %d, are waiting, the oldest is dropped); the scan just matched is %.3f s "
-           "old; %.1f ms a scan on average", scan_subscriber_.getTopic().c_str(), skipped, seconds, total,
-           options_.scan_subscriber_queue_size, (ros::Time::now() - scan.header.stamp).toSec(), meanMs);
+           "scan_subscriber_queue_size, %d, are waiting, the oldest is dropped); the scans matched were up to %.3f s "
+           "behind the newest received (by their stamps); %.1f ms a scan on average",
+           scan_subscriber_.getTopic().c_str(), skipped, seconds, total, options_.scan_subscriber_queue_size,
+           most_behind, mean_ms);
 }
 
 bool MappingNode::acceptStamp(const ros::Time& stamp) {

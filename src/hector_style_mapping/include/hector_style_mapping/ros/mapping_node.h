@@ -64,8 +64,9 @@ class MappingNode {
   // The scan path: takes the scans from the queue, in order, and matches each.
   void matchScans();
   void processScan(const sensor_msgs::LaserScan& scan);
-  // Once a second while scans are being skipped: how many, and how old the scan just matched is.
-  void reportFallingBehind(const sensor_msgs::LaserScan& scan);
+  // Every second (a wall timer) in which scans were skipped: how many, and how far behind the newest scan
+  // received the scans matched were.
+  void reportFallingBehind();
   void sysCommandCallback(const std_msgs::String::ConstPtr& command);
   void initialPoseCallback(const geometry_msgs::PoseWithCovarianceStamped::ConstPtr& pose);
   bool dynamicMapService(nav_msgs::GetMap::Request& request, nav_msgs::GetMap::Response& response);
@@ -126,7 +127,10 @@ class MappingNode {
   bool stopping_ = false;
   long skipped_since_report_ = 0;  // under queue_mutex_
   long skipped_total_ = 0;         // under queue_mutex_
+  ros::Time newest_stamp_;         // of the scans received, under queue_mutex_
+  double most_behind_ = 0.0;       // s, newest_stamp_ - a scan's stamp as it is taken, since the last report
   ros::WallTime last_behind_report_;
+  ros::WallTimer behind_timer_;
   ros::CallbackQueue scan_callbacks_;
   std::unique_ptr<ros::AsyncSpinner> scan_spinner_;
   std::thread scan_path_;
