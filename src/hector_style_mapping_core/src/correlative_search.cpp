@@ -169,7 +169,7 @@ SearchResult search(const LikelihoodField& field, const ScanPoints& scan, const 
 
   // The coarsest blocks that still fit across the window four times.
   int level = 0;
-  while (level + 1 < LikelihoodField::kLevels && (2 << level) <= shifts) ++level;
+  while (level + 1 < LikelihoodField::kLevels && (1 << level) < 2 * shifts + 1) ++level;
   const Eigen::Vector2d expected_cells = (prior.expected - Eigen::Vector2d(centre.x, centre.y)) / resolution;
   BranchAndBound bnb(field, rotated, shifts, angles, expected_cells, std::max(prior.weight, 0.0) * resolution);
   if (excluded_radius >= 0.0) {
