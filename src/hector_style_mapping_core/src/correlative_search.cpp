@@ -5,6 +5,8 @@
 #include <limits>
 #include <vector>
 
+#include "hector_style_mapping_core/floor_to_int.h"
+
 namespace hector_style_mapping {
 
 namespace {
@@ -163,7 +165,7 @@ SearchResult search(const LikelihoodField& field, const ScanPoints& scan, const 
     cells.reserve(points.size());
     for (const Eigen::Vector2d& p : points) {
       const Eigen::Vector2d c = field.toCell(transformPoint(pose, p));
-      cells.emplace_back(static_cast<int>(std::floor(c.x() + 0.5)), static_cast<int>(std::floor(c.y() + 0.5)));
+      cells.emplace_back(floorToInt(c.x() + 0.5), floorToInt(c.y() + 0.5));
     }
   }
 

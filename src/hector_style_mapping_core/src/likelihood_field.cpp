@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "hector_style_mapping_core/floor_to_int.h"
+
 namespace hector_style_mapping {
 
 namespace {
@@ -56,7 +58,7 @@ void LikelihoodField::addHits(const std::vector<PlacedScan>& scans) {
     forEachPoint(placed, [&](const Eigen::Vector2d& p, bool hit) {
       if (!hit) return;
       const Eigen::Vector2d c = toCell(p);
-      const int cx = static_cast<int>(std::floor(c.x() + 0.5)), cy = static_cast<int>(std::floor(c.y() + 0.5));
+      const int cx = floorToInt(c.x() + 0.5), cy = floorToInt(c.y() + 0.5);
       // exp(-d^2 / (2 sigma^2)) is exp of the x part times exp of the y part.
       double along_x[2 * kMaxRadius + 1];
       for (int i = -radius; i <= radius; ++i) {
@@ -86,7 +88,9 @@ void LikelihoodField::addFreeSpace(const std::vector<PlacedScan>& scans) {
       const Eigen::Vector2d step = steps > 0 ? Eigen::Vector2d((end - start) / steps) : Eigen::Vector2d::Zero();
       for (int i = 0; i < steps; ++i) {
         const Eigen::Vector2d c = start + i * step;
-        const int x = static_cast<int>(std::floor(c.x() + 0.5)), y = static_cast<int>(std::floor(c.y() + 0.5));
+        // Rounded to the nearest cell; c >= 0 (the grid has a margin round every point), so truncating c + 0.5
+        // is floor(c + 0.5) without the call.
+        const int x = static_cast<int>(c.x() + 0.5), y = static_cast<int>(c.y() + 0.5);
         float& cell = cells[static_cast<std::size_t>(y * size_x_ + x)];
         if (cell < kNearHit) cell = kFreeValue;
       }
@@ -103,7 +107,18 @@ void LikelihoodField::buildLevels() {
     const auto at = [&](int x, int y) {
       return x < size_x_ && y < size_y_ ? below[static_cast<std::size_t>(y * size_x_ + x)] : 0.0f;
     };
-    for (int y = 0; y < size_y_; ++y)
+    // Where all four cells lie inside, without the bounds checks (the compiler vectorises it); then the rim.
+    const int inner_x = std::max(size_x_ - half, 0), inner_y = std::max(size_y_ - half, 0);
+    for (int y = 0; y < inner_y; ++y) {
+      const float* row = &below[static_cast<std::size_t>(y) * size_x_];
+      const float* next = row + static_cast<std::size_t>(half) * size_x_;
+      float* out = &cells[static_cast<std::size_t>(y) * size_x_];
+      for (int x = 0; x < inner_x; ++x)
+        out[x] = std::max(std::max(row[x], row[x + half]), std::max(next[x], next[x + half]));
+      for (int x = inner_x; x < size_x_; ++x)
+        out[x] = std::max(std::max(at(x, y), at(x + half, y)), std::max(at(x, y + half), at(x + half, y + half)));
+    }
+    for (int y = inner_y; y < size_y_; ++y)
       for (int x = 0; x < size_x_; ++x)
         cells[static_cast<std::size_t>(y * size_x_ + x)] =
             std::max(std::max(at(x, y), at(x + half, y)), std::max(at(x, y + half), at(x + half, y + half)));
@@ -112,9 +127,15 @@ void LikelihoodField::buildLevels() {
 
 double LikelihoodField::interpolate(const Eigen::Vector2d& point) const {
   const Eigen::Vector2d c = toCell(point);
-  const double fx = std::floor(c.x()), fy = std::floor(c.y());
-  const int x = static_cast<int>(fx), y = static_cast<int>(fy);
+  const int x = floorToInt(c.x()), y = floorToInt(c.y());
+  const double fx = x, fy = y;
   const double ax = c.x() - fx, ay = c.y() - fy;
+  if (x >= 0 && y >= 0 && x + 1 < size_x_ && y + 1 < size_y_) {
+    // All four inside (nearly always): read them without value()'s checks, the same sum.
+    const float* low = &levels_[0][static_cast<std::size_t>(y) * size_x_ + x];
+    const float* high = low + size_x_;
+    return (1.0 - ay) * ((1.0 - ax) * low[0] + ax * low[1]) + ay * ((1.0 - ax) * high[0] + ax * high[1]);
+  }
   return (1.0 - ay) * ((1.0 - ax) * value(x, y) + ax * value(x + 1, y)) +
          ay * ((1.0 - ax) * value(x, y + 1) + ax * value(x + 1, y + 1));
 }

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "hector_style_mapping_core/floor_to_int.h"
+
 namespace hector_style_mapping {
 
 namespace {
@@ -207,10 +209,10 @@ double OccupancyGridMap::interpolate(const Eigen::Vector2d& p, Eigen::Vector2d* 
     }
     return 0.0;
   }
-  const double u_floor = std::floor(u);
-  const double v_floor = std::floor(v);
-  const int x = static_cast<int>(u_floor);
-  const int y = static_cast<int>(v_floor);
+  const int x = floorToInt(u);
+  const int y = floorToInt(v);
+  const double u_floor = x;
+  const double v_floor = y;
   const double fx = u - u_floor;  // weight of the right-hand column
   const double fy = v - v_floor;  // weight of the upper row
 
