@@ -17,9 +17,10 @@ Per log and run it prints one line:
 Errors as bench_radish.py's (absolute after the best rigid 2-D fit; relative: each scan against the first
 scan at least 1 s later). The target: at 10x the live errors within 10 % of offline, every scan matched.
 Playing a log faster than 10x (--rates 40,100) puts the scans as close together as a dense log's at 10x
-(Intel's 0.34 scans a second at 100x: 34 a second; Freiburg 079's 4.5 at 10x: 45).
+(Intel's 0.34 scans a second at 100x: 34 a second; Freiburg 079's 4.5 at 10x: 45). --dense HZ plays, instead
+of each log, the dense log dense_radish_bag.py makes of it (HZ scans a second, 361 beams).
 
-  bench_radish_live.py [--logs DIR] [--rates 1,4,10] [--only NAME]
+  bench_radish_live.py [--logs DIR] [--rates 1,4,10] [--only NAME] [--dense HZ] [--out DIR]
 """
 import argparse
 import math
@@ -143,19 +144,30 @@ def score_live(name, rate, bag, truth, live, out):
     return True
 
 
+def dense_bag(log, out, rate):
+    name = os.path.basename(log).split('-')[0] + '_dense'
+    bag = os.path.join(out, name + '.bag')
+    subprocess.run([sys.executable, os.path.join(HERE, 'dense_radish_bag.py'), log, bag, '--rate', str(rate)],
+                   check=True, stdout=subprocess.DEVNULL)
+    return name, bag
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
     parser.add_argument('--logs', default=bench_radish.DEFAULT_LOGS)
     parser.add_argument('--rates', default='1,4,10', help='comma-separated rosbag play rates')
     parser.add_argument('--only', help='only the log whose name starts with this (aces, intel)')
     parser.add_argument('--out', help='keep the bags, poses and mapper logs here')
+    parser.add_argument('--dense', type=float, default=0.0,
+                        help='scans a second: the dense log dense_radish_bag.py makes of each log instead')
     args = parser.parse_args()
     rates = [float(r) for r in args.rates.split(',')]
     logs = sorted(os.path.join(args.logs, f) for f in os.listdir(args.logs) if f.endswith(('.log', '.log.gz')))
     if args.only:
         logs = [log for log in logs if os.path.basename(log).startswith(args.only)]
-    print('command: scripts/bench_radish_live.py --logs %s --rates %s%s' % (
-        args.logs, args.rates, ' --only ' + args.only if args.only else ''), flush=True)
+    print('command: scripts/bench_radish_live.py --logs %s --rates %s%s%s' % (
+        args.logs, args.rates, ' --only ' + args.only if args.only else '',
+        ' --dense %g' % args.dense if args.dense else ''), flush=True)
     ok = True
     with tempfile.TemporaryDirectory(prefix='bench_radish_live.') as tmp:
         out = args.out or tmp
@@ -163,7 +175,7 @@ def main():
         live = Live()
         try:
             for log in logs:
-                name, bag = bench_radish.to_bag(log, out)
+                name, bag = dense_bag(log, out, args.dense) if args.dense else bench_radish.to_bag(log, out)
                 ok &= bench_radish.run_mapper(name, ('offline', bench_radish.CONFIGS[-1][1]), bag, out, []) is not None
                 truth = truth_by_stamp(bag)
                 for rate in rates:

@@ -157,14 +157,20 @@ SearchResult search(const LikelihoodField& field, const ScanPoints& scan, const 
   const int angles = static_cast<int>(std::ceil(std::max(window.angular, 0.0) / angle_step));
   const int shifts = static_cast<int>(std::ceil(std::max(window.linear, 0.0) / resolution));
 
-  // Each rotation's points as cells, the translation at the centre.
-  std::vector<std::vector<Eigen::Vector2i>> rotated(static_cast<std::size_t>(2 * angles + 1));
+  // Each rotation's points as cells, the translation at the centre. The buffers are kept from one search to the
+  // next (a search per scan, a hundred rotations or more each on a dense log).
+  thread_local std::vector<std::vector<Eigen::Vector2i>> rotated;
+  rotated.resize(static_cast<std::size_t>(2 * angles + 1));
   for (int a = -angles; a <= angles; ++a) {
     const Pose2D pose{centre.x, centre.y, centre.theta + a * angle_step};
+    const double cos_theta = std::cos(pose.theta), sin_theta = std::sin(pose.theta);  // transformPoint's, once
     std::vector<Eigen::Vector2i>& cells = rotated[static_cast<std::size_t>(a + angles)];
+    cells.clear();
     cells.reserve(points.size());
     for (const Eigen::Vector2d& p : points) {
-      const Eigen::Vector2d c = field.toCell(transformPoint(pose, p));
+      const Eigen::Vector2d moved(pose.x + cos_theta * p.x() - sin_theta * p.y(),
+                                  pose.y + sin_theta * p.x() + cos_theta * p.y());
+      const Eigen::Vector2d c = field.toCell(moved);
       cells.emplace_back(floorToInt(c.x() + 0.5), floorToInt(c.y() + 0.5));
     }
   }
