@@ -85,9 +85,7 @@ void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double s
     return;
   }
 
-  if (loop_closure_) {
-    if (std::optional<LoopClosureUpdate> closed = loop_closure_->take()) adopt(std::move(*closed));
-  }
+  adoptClosedLoop();
 
   const bool guess_usable =
       guess != nullptr && std::isfinite(guess->x) && std::isfinite(guess->y) && std::isfinite(guess->theta);
@@ -196,10 +194,18 @@ LoopClosureStats SlamProcessor::loopClosureStats() const {
   return loop_closure_ ? loop_closure_->stats() : LoopClosureStats{};
 }
 
+bool SlamProcessor::adoptClosedLoop() {
+  if (!loop_closure_) return false;
+  std::optional<LoopClosureUpdate> closed = loop_closure_->take();
+  if (!closed) return false;
+  adopt(std::move(*closed));
+  return true;
+}
+
 void SlamProcessor::finishLoopClosure() {
   if (!loop_closure_) return;
   loop_closure_->waitUntilIdle();
-  if (std::optional<LoopClosureUpdate> closed = loop_closure_->take()) adopt(std::move(*closed));
+  adoptClosedLoop();
 }
 
 SearchWindow SlamProcessor::searchWindow(double seconds_since_last_scan) {

@@ -427,12 +427,16 @@ void MappingNode::publishMap() {
   {
     // Only the conversion holds the scan path up (a few ms for a 2048-cell map); publishing does not.
     std::lock_guard<std::mutex> lock(state_mutex_);
+    // A loop closed after the last scan (the robot stopped, the log ended) is not left waiting for the next.
+    if (slam_.adoptClosedLoop()) followLoopClosure();
     trajectory = trajectory_;
     // As hector_mapping: the map goes out every map_pub_period with the current stamp, converted
     // again only when it changed. The stamp tells subscribers the map is up to date at that time
     // (an explorer waiting for a map made after its robot arrived, say).
-    if (slam_.mapUpdateCount() != published_map_updates_) {
-      published_map_updates_ = slam_.mapUpdateCount();
+    // A closed loop redraws the map without a map update.
+    const std::pair<int, int> version(slam_.mapUpdateCount(), slam_.loopClosureAdoptions());
+    if (version != published_map_version_) {
+      published_map_version_ = version;
       map_message_.header.frame_id = options_.map_frame;
       fillOccupancyGrid(slam_.map().finest(), &map_message_);
       map_changed = true;
@@ -473,7 +477,7 @@ void MappingNode::resetState() {
   anchored_trajectory_.clear();
   trajectory_closures_ = 0;
   have_initial_pose_ = false;
-  published_map_updates_ = -1;  // converted again, empty
+  published_map_version_ = {-1, -1};  // converted again, empty
 }
 
 bool MappingNode::resetMapService(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {

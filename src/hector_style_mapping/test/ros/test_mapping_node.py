@@ -80,8 +80,9 @@ class MappingNodeTest(unittest.TestCase):
         cls.sys_pub = rospy.Publisher('/syscommand', String, queue_size=2, latch=False)
         cls.lock = threading.Lock()
         cls.poses, cls.pose_updates, cls.logs, cls.map_tf_stamps = [], [], [], []
-        rospy.Subscriber('/slam_out_pose', PoseStamped, lambda m: cls._keep(cls.poses, m))
-        rospy.Subscriber('/poseupdate', PoseWithCovarianceStamped, lambda m: cls._keep(cls.pose_updates, m))
+        pose_subscribers = [
+            rospy.Subscriber('/slam_out_pose', PoseStamped, lambda m: cls._keep(cls.poses, m)),
+            rospy.Subscriber('/poseupdate', PoseWithCovarianceStamped, lambda m: cls._keep(cls.pose_updates, m))]
         rospy.Subscriber('/tf', TFMessage, cls._on_tf)
         rospy.Subscriber('/rosout', Log, lambda m: cls._keep(cls.logs, m) if m.name.endswith('hector_mapping') else None)
         cls.tf = tf2_ros.Buffer()
@@ -90,7 +91,9 @@ class MappingNodeTest(unittest.TestCase):
         cls.get_map = rospy.ServiceProxy('/dynamic_map', GetMap)
         cls.reset_map = rospy.ServiceProxy('/reset_map', Trigger)
         deadline = time.time() + 10
-        while cls.scan_pub.get_num_connections() == 0 and time.time() < deadline:
+        # Connected both ways before the first scan, so that its pose is not published to nobody.
+        while (cls.scan_pub.get_num_connections() == 0 or any(
+                sub.get_num_connections() == 0 for sub in pose_subscribers)) and time.time() < deadline:
             time.sleep(0.05)
         cls.last_stamp = rospy.Time.now()
 

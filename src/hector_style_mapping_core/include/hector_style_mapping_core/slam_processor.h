@@ -88,6 +88,9 @@ class SlamProcessor {
   // In the background: waits until every keyframe has been through loop closure and adopts what it found,
   // as at the end of a log. Inline: nothing to wait for.
   void finishLoopClosure();
+  // Adopts a loop the background closed since the last scan, without waiting for the next one (a robot that
+  // stopped, a log that ended); true if there was one. Inline: none is ever pending.
+  bool adoptClosedLoop();
 
   // The base frame's pose in the map frame after the last scan (the start pose before any).
   const Pose2D& pose() const { return pose_; }

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include <geometry_msgs/PoseWithCovarianceStamped.h>
 #include <geometry_msgs/TransformStamped.h>
@@ -112,7 +113,8 @@ class MappingNode {
   nav_msgs::Path trajectory_;
   AnchoredTrajectory anchored_trajectory_;  // trajectory_'s poses, held to the keyframes
   int trajectory_closures_ = 0;  // SlamProcessor::loopClosureAdoptions() when trajectory_ last followed them
-  int published_map_updates_ = -1;  // SlamProcessor::mapUpdateCount() when map_message_ was filled
+  // SlamProcessor::mapUpdateCount() and loopClosureAdoptions() when map_message_ was filled.
+  std::pair<int, int> published_map_version_{-1, -1};
   nav_msgs::OccupancyGrid map_message_;  // the last map converted, re-sent with a new stamp while unchanged
   ScanPoints scan_points_;  // reused: no allocation per scan
   ScanTiming timing_;
