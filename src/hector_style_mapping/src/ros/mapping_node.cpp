@@ -150,7 +150,7 @@ void MappingNode::scanCallback(const sensor_msgs::LaserScan::ConstPtr& scan) {
       ++skipped_total_;
     }
     waiting_scans_.push_back(scan);
-    newest_stamp_ = std::max(newest_stamp_, scan->header.stamp);
+    newest_stamp_ = scan->header.stamp;  // the last received (not the largest: a bag may loop)
   }
   scan_waiting_.notify_one();
 }

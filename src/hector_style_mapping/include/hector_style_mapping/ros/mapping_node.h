@@ -129,7 +129,7 @@ class MappingNode {
   bool stopping_ = false;
   long skipped_since_report_ = 0;  // under queue_mutex_
   long skipped_total_ = 0;         // under queue_mutex_
-  ros::Time newest_stamp_;         // of the scans received, under queue_mutex_
+  ros::Time newest_stamp_;         // of the last scan received, under queue_mutex_
   double most_behind_ = 0.0;       // s, newest_stamp_ - a scan's stamp as it is taken, since the last report
   ros::WallTime last_behind_report_;
   ros::WallTimer behind_timer_;
