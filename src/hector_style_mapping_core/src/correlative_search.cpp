@@ -106,12 +106,22 @@ std::vector<Eigen::Vector2d> rotatedBy(const std::vector<Eigen::Vector2d>& point
   return rotated;
 }
 
-// Mean interpolated field value of `points` (already rotated) moved by (x, y).
+// Mean interpolated field value of `points` (already rotated) moved by (x, y). When it can no longer beat
+// `to_beat` (each point adds at most 1, a cell's largest value), -infinity at once: refine() only wants a better
+// candidate, and most are not.
 double interpolatedScore(const LikelihoodField& field, const std::vector<Eigen::Vector2d>& points, double x,
-                         double y) {
+                         double y, double to_beat = -std::numeric_limits<double>::infinity()) {
+  const double n = static_cast<double>(points.size());
+  // A margin for rounding: a candidate given up on is below to_beat by far more than the sum's rounding.
+  const double needed = to_beat * n - 1e-9 * n;
   double sum = 0.0;
-  for (const Eigen::Vector2d& p : points) sum += field.interpolate({p.x() + x, p.y() + y});
-  return sum / static_cast<double>(points.size());
+  double left = n;
+  for (const Eigen::Vector2d& p : points) {
+    sum += field.interpolate({p.x() + x, p.y() + y});
+    left -= 1.0;
+    if (sum + left < needed) return -std::numeric_limits<double>::infinity();
+  }
+  return sum / n;
 }
 
 // The best pose within +-2 steps of `pose` in x and y and +-(rotations / 2) steps in theta, on the
@@ -125,7 +135,7 @@ Pose2D refine(const LikelihoodField& field, const std::vector<Eigen::Vector2d>& 
     for (int dy = -2; dy <= 2; ++dy) {
       for (int dx = -2; dx <= 2; ++dx) {
         const double x = pose.x + dx * linear_step, y = pose.y + dy * linear_step;
-        const double value = interpolatedScore(field, rotated, x, y);
+        const double value = interpolatedScore(field, rotated, x, y, *score);
         ++*candidates;
         if (value > *score) *score = value, best = {x, y, theta};
       }
