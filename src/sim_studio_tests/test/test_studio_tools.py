@@ -132,8 +132,11 @@ class StudioTools(unittest.TestCase):
         self.assertIn("field 'data' (float64)", text)
         self.wait("return %s.classList.contains('tool-error')" % status)
         self.css("input.publisher-enabled", row).click()  # publishing at the rate: refused the same way
-        self.wait("return %s.classList.contains('tool-error') && !%s.textContent.includes('published')"
-                  % (status, status))
+        # The refusal unchecks the box when the server's answer comes (the error class is still there from the
+        # publish above, so wait for the box, not for the class).
+        enabled = "document.querySelector('.publisher[data-topic=\"/studio_test/bad\"] .publisher-enabled')"
+        self.wait("return !%s.checked && %s.classList.contains('tool-error') && !%s.textContent.includes('published')"
+                  % (enabled, status, status), what="the box still checked after a refused publisher")
         self.assertFalse(self.css("input.publisher-enabled", row).is_selected())
         # a field std_msgs/Float64 does not have, sent as the view's controls send a publish
         error = self.driver.execute_async_script(
