@@ -51,6 +51,14 @@ std::vector<Pose2D> tour() {
 // The front end's view of a step: 3 % too long and turned 0.1 degree too far.
 Pose2D drifted(const Pose2D& step) { return {1.03 * step.x, 1.03 * step.y, step.theta + 0.1 * kDegree}; }
 
+// The laser every ring test scans with: 360 beams, 1 cm range noise.
+testing::LaserConfig ringLaser() {
+  testing::LaserConfig laser;
+  laser.beams = 360;
+  laser.range_noise_sigma = 0.01;
+  return laser;
+}
+
 double distance(const Pose2D& a, const Pose2D& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
 std::vector<Pose2D> posesOf(const LoopClosure& loop) {
@@ -64,9 +72,7 @@ std::vector<Pose2D> posesOf(const LoopClosure& loop) {
 TEST(LoopClosure, SpreadsTheDriftOfARingBackOverIt) {
   const testing::SyntheticWorld world = ring();
   const std::vector<Pose2D> truth = tour();
-  testing::LaserConfig laser;
-  laser.beams = 360;
-  laser.range_noise_sigma = 0.01;
+  const testing::LaserConfig laser = ringLaser();
   std::mt19937 rng(7);
 
   LoopClosure loop;
@@ -108,9 +114,7 @@ TEST(LoopClosure, SpreadsTheDriftOfARingBackOverIt) {
 TEST(LoopClosure, AnchoredTrajectoryFollowsTheClosedLoop) {
   const testing::SyntheticWorld world = ring();
   const std::vector<Pose2D> truth = tour();
-  testing::LaserConfig laser;
-  laser.beams = 360;
-  laser.range_noise_sigma = 0.01;
+  const testing::LaserConfig laser = ringLaser();
   std::mt19937 rng(7);
 
   LoopClosure loop;
@@ -214,9 +218,7 @@ TEST(LoopClosure, AMatchTheChainCannotExplainIsRefused) {
 TEST(LoopClosureWorker, InTheBackgroundFindsWhatInlineFinds) {
   const testing::SyntheticWorld world = ring();
   const std::vector<Pose2D> truth = tour();
-  testing::LaserConfig laser;
-  laser.beams = 360;
-  laser.range_noise_sigma = 0.01;
+  const testing::LaserConfig laser = ringLaser();
   std::mt19937 rng(7);
   const MapperOptions options;
   LoopClosureWorker inline_worker(options, LoopClosureThreading::kInline);
@@ -269,9 +271,7 @@ TEST(LoopClosureWorker, InTheBackgroundFindsWhatInlineFinds) {
 TEST(LoopClosureWorker, SlamProcessorInTheBackgroundKeepsItsMapTheRedrawOfItsKeyframes) {
   const testing::SyntheticWorld world = ring();
   const std::vector<Pose2D> truth = tour();
-  testing::LaserConfig laser;
-  laser.beams = 360;
-  laser.range_noise_sigma = 0.01;
+  const testing::LaserConfig laser = ringLaser();
   MapperOptions options;
   options.map_resolution = 0.05;
   options.map_size = 512;

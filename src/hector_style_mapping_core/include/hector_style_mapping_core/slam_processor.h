@@ -9,7 +9,6 @@
 
 #include "hector_style_mapping_core/correlative_search.h"
 #include "hector_style_mapping_core/likelihood_field.h"
-#include "hector_style_mapping_core/loop_closure.h"
 #include "hector_style_mapping_core/loop_closure_worker.h"
 #include "hector_style_mapping_core/mapper_options.h"
 #include "hector_style_mapping_core/multi_resolution_map.h"
