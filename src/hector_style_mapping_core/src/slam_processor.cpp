@@ -36,7 +36,6 @@ SlamProcessor::SlamProcessor(const MapperOptions& options, LoopClosureThreading 
 
 void SlamProcessor::reset(const Pose2D& start) {
   map_.clear();
-  map_stale_ = false;
   pose_ = {start.x, start.y, normalizeAngle(start.theta)};
   previous_pose_ = pose_;
   last_map_update_pose_ = pose_;
@@ -111,8 +110,7 @@ void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double s
         correlativeSearch(field_, scan, start, searchWindow(seconds_since_last_scan), prior);
     // Gauss-Newton on the finest level then settles it on the whole map, unless it wanders off further than
     // the search's own resolution: then the map disagrees with the recent scans (drift), and they know better.
-    // A map not yet redrawn after a loop closed is not asked.
-    last_match_ = matcher_.matchWithDetails(map_.finest(), scan, found.pose, map_stale_ ? 0 : kFinestLevelIterations);
+    last_match_ = matcher_.matchWithDetails(map_.finest(), scan, found.pose, kFinestLevelIterations);
     if (std::hypot(last_match_.pose.x - found.pose.x, last_match_.pose.y - found.pose.y) >
             LikelihoodField::kResolution ||
         std::abs(angleDifference(last_match_.pose.theta, found.pose.theta)) > found.angle_step) {
@@ -139,7 +137,7 @@ void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double s
     field_stale_ = true;
   }
   if (map_updated_by_last_scan_) {
-    if (!map_stale_) map_.updateByScan(scan, pose_);  // else the redraw brings it
+    map_.updateByScan(scan, pose_);
     last_map_update_pose_ = pose_;
     if (search) {
       window_.push_back({pose_, scan});
@@ -173,14 +171,9 @@ void SlamProcessor::adopt(LoopClosureUpdate update) {
   last_map_update_pose_ = moved(last_map_update_pose_);
   for (std::size_t i = 0; i < keyframe_poses_.size(); ++i)
     keyframe_poses_[i] = i < optimised ? update.poses[i] : moved(keyframe_poses_[i]);
-  if (update.map) {
-    // Redrawn in the background up to the last optimised keyframe: the later ones on top, in order.
-    map_ = std::move(*update.map);
-    for (std::size_t i = optimised; i < keyframe_poses_.size(); ++i) map_.updateByScan(keyframe_scans_[i], keyframe_poses_[i]);
-    map_stale_ = false;
-  } else {
-    map_stale_ = true;  // redrawn when next asked for: loops close every few keyframes, maps are read less often
-  }
+  // Redrawn by the worker up to the last optimised keyframe: the later ones on top, in order.
+  map_ = std::move(*update.map);
+  for (std::size_t i = optimised; i < keyframe_poses_.size(); ++i) map_.updateByScan(keyframe_scans_[i], keyframe_poses_[i]);
   window_.clear();
   unmapped_scan_.reset();
   const std::size_t keyframes = keyframe_poses_.size();
@@ -224,15 +217,6 @@ SearchWindow SlamProcessor::searchWindow(double seconds_since_last_scan) {
   window.linear = std::min(window.linear, kPlausibleSpeed * interval);
   window.angular = std::min(window.angular, kPlausibleTurnRate * interval);
   return window;
-}
-
-const MultiResolutionMap& SlamProcessor::map() const {
-  if (map_stale_) {
-    map_.clear();
-    for (std::size_t i = 0; i < keyframe_poses_.size(); ++i) map_.updateByScan(keyframe_scans_[i], keyframe_poses_[i]);
-    map_stale_ = false;
-  }
-  return map_;
 }
 
 bool SlamProcessor::movedEnoughForMapUpdate() const {

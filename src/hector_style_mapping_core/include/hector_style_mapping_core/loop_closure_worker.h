@@ -31,8 +31,8 @@ struct LoopClosureStats {
   std::vector<LoopClosure::Closure> closures;
 };
 
-// A closed loop, for the front end to adopt: the optimised poses of keyframes 0 .. poses.size() - 1 and, in
-// the background, the map redrawn from them (null inline: the front end redraws when the map is next read).
+// A closed loop, for the front end to adopt: the optimised poses of keyframes 0 .. poses.size() - 1 and the map
+// redrawn from them.
 struct LoopClosureUpdate {
   std::vector<Pose2D> poses;
   std::shared_ptr<MultiResolutionMap> map;

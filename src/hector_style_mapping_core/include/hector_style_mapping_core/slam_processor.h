@@ -35,8 +35,8 @@ class SlamProcessor {
   static constexpr double kUnconstrainedRotationVariance = M_PI * M_PI;
 
   // Throws std::invalid_argument with validate()'s message if the options are not valid. `threading`: where
-  // loop closure works (LoopClosureWorker); in the background, a closed loop is adopted at the first scan
-  // after it was found, with the map already redrawn.
+  // loop closure works (LoopClosureWorker); inline, a closed loop is adopted as the keyframe that closed it is
+  // mapped, in the background at the first scan after it was found; the map comes redrawn either way.
   explicit SlamProcessor(const MapperOptions& options,
                          LoopClosureThreading threading = LoopClosureThreading::kInline);
 
@@ -114,9 +114,9 @@ class SlamProcessor {
   // Empty map, pose = start (theta normalised), covariance zero; the next scan updates the map.
   void reset(const Pose2D& start = Pose2D{});
 
-  // The map; after a loop closed, redrawn here from the optimised keyframes (the first call after a closure
-  // costs a redraw: 0.1-0.2 s for a building's worth of keyframes).
-  const MultiResolutionMap& map() const;
+  // The map; after a loop closed, the loop closure worker's redraw from the optimised keyframes, the later ones
+  // drawn on top.
+  const MultiResolutionMap& map() const { return map_; }
   const MapperOptions& options() const { return options_; }
   // The finest level's match of the last scan (pose, Hessian, residual), for diagnostics.
   const ScanMatchResult& lastMatch() const { return last_match_; }
@@ -134,9 +134,7 @@ class SlamProcessor {
   ScanMatchResult matchThroughLevels(const ScanPoints& scan, const Pose2D& start) const;
 
   MapperOptions options_;
-  // mutable: map() redraws it on demand after a loop closed (map_stale_).
-  mutable MultiResolutionMap map_;
-  mutable bool map_stale_ = false;
+  MultiResolutionMap map_;
   ScanMatcher matcher_;
   Pose2D pose_;
   Pose2D last_map_update_pose_;
