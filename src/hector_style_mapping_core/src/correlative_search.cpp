@@ -58,10 +58,10 @@ class BranchAndBound {
   }
 
   // Depth first, best bound first; a branch whose bound is below the best leaf so far cannot hold a better one.
-  void descend(std::vector<Candidate> candidates) {
-    std::sort(candidates.begin(), candidates.end(),
-              [](const Candidate& a, const Candidate& b) { return a.score > b.score; });
-    for (const Candidate& c : candidates) {
+  void descend(Candidate* candidates, std::size_t count) {
+    std::sort(candidates, candidates + count, [](const Candidate& a, const Candidate& b) { return a.score > b.score; });
+    for (const Candidate* it = candidates; it != candidates + count; ++it) {
+      const Candidate& c = *it;
       if (c.score < best_.score) break;
       if (c.level == 0) {
         if (std::abs(c.x - excluded_.x()) <= excluded_radius_ && std::abs(c.y - excluded_.y()) <= excluded_radius_)
@@ -71,13 +71,14 @@ class BranchAndBound {
         continue;
       }
       const int half = 1 << (c.level - 1);
-      std::vector<Candidate> children;
+      Candidate children[4];  // on the stack: a search descends through tens of thousands of blocks
+      std::size_t count = 0;
       for (int dy = 0; dy <= half; dy += half)
         for (int dx = 0; dx <= half; dx += half)
           if (c.x + dx <= shifts_ && c.y + dy <= shifts_)
-            children.push_back({c.rotation, c.x + dx, c.y + dy, c.level - 1,
-                                score(c.rotation, c.x + dx, c.y + dy, c.level - 1)});
-      descend(std::move(children));
+            children[count++] = {c.rotation, c.x + dx, c.y + dy, c.level - 1,
+                                 score(c.rotation, c.x + dx, c.y + dy, c.level - 1)};
+      descend(children, count);
     }
   }
 
@@ -165,22 +166,20 @@ SearchResult search(const LikelihoodField& field, const ScanPoints& scan, const 
   const double angle_step = angularStep(points);
   result.angle_step = angle_step;
   const int angles = static_cast<int>(std::ceil(std::max(window.angular, 0.0) / angle_step));
-  const int shifts = static_cast<int>(std::ceil(std::max(window.linear, 0.0) / resolution));
+  // Less a hair: 0.2 / 0.05 is 4.000000000000001, and a window of 0.2 m is 4 cells, not 5.
+  const int shifts = static_cast<int>(std::ceil(std::max(window.linear, 0.0) / resolution - 1e-9));
 
   // Each rotation's points as cells, the translation at the centre. The buffers are kept from one search to the
   // next (a search per scan, a hundred rotations or more each on a dense log).
   thread_local std::vector<std::vector<Eigen::Vector2i>> rotated;
   rotated.resize(static_cast<std::size_t>(2 * angles + 1));
   for (int a = -angles; a <= angles; ++a) {
-    const Pose2D pose{centre.x, centre.y, centre.theta + a * angle_step};
-    const double cos_theta = std::cos(pose.theta), sin_theta = std::sin(pose.theta);  // transformPoint's, once
+    const PoseTransform to_map(Pose2D{centre.x, centre.y, centre.theta + a * angle_step});
     std::vector<Eigen::Vector2i>& cells = rotated[static_cast<std::size_t>(a + angles)];
     cells.clear();
     cells.reserve(points.size());
     for (const Eigen::Vector2d& p : points) {
-      const Eigen::Vector2d moved(pose.x + cos_theta * p.x() - sin_theta * p.y(),
-                                  pose.y + sin_theta * p.x() + cos_theta * p.y());
-      const Eigen::Vector2d c = field.toCell(moved);
+      const Eigen::Vector2d c = field.toCell(to_map(p));
       cells.emplace_back(floorToInt(c.x() + 0.5), floorToInt(c.y() + 0.5));
     }
   }
@@ -201,7 +200,7 @@ SearchResult search(const LikelihoodField& field, const ScanPoints& scan, const 
   for (int r = 0; r <= 2 * angles; ++r)
     for (int y = -shifts; y <= shifts; y += 1 << level)
       for (int x = -shifts; x <= shifts; x += 1 << level) top.push_back({r, x, y, level, bnb.score(r, x, y, level)});
-  bnb.descend(std::move(top));
+  bnb.descend(top.data(), top.size());
   const Candidate& best = bnb.best();
   result.candidates = bnb.evaluated();
   if (!std::isfinite(best.score)) {  // everything excluded

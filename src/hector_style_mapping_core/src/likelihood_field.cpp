@@ -15,87 +15,149 @@ const float kNearHit = static_cast<float>(std::exp(-2.0));
 
 template <typename Visit>
 void forEachPoint(const PlacedScan& placed, Visit visit) {
+  const PoseTransform to_map(placed.pose);
   for (const Eigen::Vector2d& p : placed.scan.points)
-    if (p.allFinite()) visit(transformPoint(placed.pose, p), true);
+    if (p.allFinite()) visit(to_map(p), true);
   for (const Eigen::Vector2d& p : placed.scan.free_rays)
-    if (p.allFinite()) visit(transformPoint(placed.pose, p), false);
+    if (p.allFinite()) visit(to_map(p), false);
+}
+
+constexpr double kMargin = 3.0 * LikelihoodField::kSigma + 2.0 * LikelihoodField::kResolution;  // the blur's room
+
+// The box round a scan's points, rays and laser (map frame), grown into; false without finite points.
+bool growExtent(const PlacedScan& placed, Eigen::Vector2d* lowest, Eigen::Vector2d* highest) {
+  const Eigen::Vector2d laser = transformPoint(placed.pose, placed.scan.origin);
+  *lowest = lowest->cwiseMin(laser), *highest = highest->cwiseMax(laser);
+  bool any = false;
+  forEachPoint(placed, [&](const Eigen::Vector2d& p, bool) {
+    *lowest = lowest->cwiseMin(p), *highest = highest->cwiseMax(p);
+    any = true;
+  });
+  return any;
+}
+
+// The cells, [first, last] on the lattice through `lattice_point` (a cell's centre), that a grid round the box
+// [lowest, highest] needs, with room for the blur.
+void cellRange(const Eigen::Vector2d& lattice_point, const Eigen::Vector2d& lowest, const Eigen::Vector2d& highest,
+               Eigen::Vector2i* first, Eigen::Vector2i* last) {
+  const Eigen::Vector2d low = (lowest - Eigen::Vector2d::Constant(kMargin) - lattice_point) / LikelihoodField::kResolution;
+  const Eigen::Vector2d high =
+      (highest + Eigen::Vector2d::Constant(kMargin) - lattice_point) / LikelihoodField::kResolution;
+  *first = Eigen::Vector2i(floorToInt(low.x()), floorToInt(low.y()));
+  *last = Eigen::Vector2i(-floorToInt(-high.x()), -floorToInt(-high.y()));
+}
+
+// A cell with a hit's value `v` added: the largest value, except that a cell where a ray passed stays free
+// unless the hit lies within 2 sigma (what build() gives adding every hit before any ray).
+inline void addHitValue(float* cell, float v) {
+  if (*cell != LikelihoodField::kFreeValue || v >= kNearHit) *cell = std::max(*cell, v);
 }
 
 }  // namespace
 
-void LikelihoodField::build(const std::vector<PlacedScan>& scans) {
-  Eigen::Vector2d low = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector2d high = -low;
+void LikelihoodField::allocate(const Eigen::Vector2d& lattice_point, const Eigen::Vector2i& first,
+                               const Eigen::Vector2i& last) {
+  levels_.resize(kLevels);
+  lattice_point_ = lattice_point;
+  first_cell_ = first.cast<double>();
+  size_x_ = last.x() - first.x() + 1;
+  size_y_ = last.y() - first.y() + 1;
+  levels_[0].assign(static_cast<std::size_t>(size_x_) * static_cast<std::size_t>(size_y_), 0.0f);
+}
+
+Eigen::Vector2d LikelihoodField::ownLatticePoint(const std::vector<PlacedScan>& scans) {
+  Eigen::Vector2d lowest = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector2d highest = -lowest;
+  for (const PlacedScan& placed : scans) growExtent(placed, &lowest, &highest);
+  return lowest - Eigen::Vector2d::Constant(kMargin);
+}
+
+void LikelihoodField::build(const std::vector<PlacedScan>& scans) { build(scans, ownLatticePoint(scans)); }
+
+void LikelihoodField::build(const std::vector<PlacedScan>& scans, const Eigen::Vector2d& lattice_point) {
+  Eigen::Vector2d lowest = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector2d highest = -lowest;
   bool any = false;
-  for (const PlacedScan& placed : scans) {
-    forEachPoint(placed, [&](const Eigen::Vector2d& p, bool) {
-      low = low.cwiseMin(p), high = high.cwiseMax(p);
-      any = true;
-    });
-    const Eigen::Vector2d origin = transformPoint(placed.pose, placed.scan.origin);
-    low = low.cwiseMin(origin), high = high.cwiseMax(origin);
-  }
+  for (const PlacedScan& placed : scans) any = growExtent(placed, &lowest, &highest) || any;
   levels_.resize(kLevels);
   size_x_ = size_y_ = 0;
   if (!any) return;
-  // Room for the blur round the outermost hits.
-  const double margin = 3.0 * kSigma + 2.0 * kResolution;
-  origin_ = low - Eigen::Vector2d::Constant(margin);
-  size_x_ = static_cast<int>(std::ceil((high.x() - low.x() + 2.0 * margin) / kResolution)) + 1;
-  size_y_ = static_cast<int>(std::ceil((high.y() - low.y() + 2.0 * margin) / kResolution)) + 1;
-  levels_[0].assign(static_cast<std::size_t>(size_x_) * static_cast<std::size_t>(size_y_), 0.0f);
-  addHits(scans);
-  addFreeSpace(scans);
+  Eigen::Vector2i first, last;
+  cellRange(lattice_point, lowest, highest, &first, &last);
+  allocate(lattice_point, first, last);
+  for (const PlacedScan& placed : scans) addHits(placed);
+  for (const PlacedScan& placed : scans) addFreeSpace(placed);
   buildLevels();
 }
 
-void LikelihoodField::addHits(const std::vector<PlacedScan>& scans) {
+void LikelihoodField::buildOnTop(const LikelihoodField& base, const PlacedScan& scan) {
+  if (base.size_x_ == 0) {  // no finite point below: the scan alone
+    build({scan});
+    return;
+  }
+  Eigen::Vector2d lowest = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector2d highest = -lowest;
+  const bool any = growExtent(scan, &lowest, &highest);
+  // The union of the base's cells and the scan's, on the base's lattice: what build() of all their scans on it
+  // covers (a range is monotone in the box).
+  Eigen::Vector2i first, last;
+  cellRange(base.lattice_point_, lowest, highest, &first, &last);
+  const Eigen::Vector2i base_first = base.first_cell_.cast<int>();
+  const Eigen::Vector2i base_last = base_first + Eigen::Vector2i(base.size_x_ - 1, base.size_y_ - 1);
+  allocate(base.lattice_point_, first.cwiseMin(base_first), last.cwiseMax(base_last));
+  const Eigen::Vector2i offset = base_first - first_cell_.cast<int>();
+  for (int y = 0; y < base.size_y_; ++y)
+    std::copy_n(&base.levels_[0][static_cast<std::size_t>(y) * base.size_x_], base.size_x_,
+                &levels_[0][static_cast<std::size_t>(y + offset.y()) * size_x_ + offset.x()]);
+  if (any) {
+    addHits(scan);
+    addFreeSpace(scan);
+  }
+  buildLevels();
+}
+
+void LikelihoodField::addHits(const PlacedScan& placed) {
   std::vector<float>& cells = levels_[0];
   constexpr int kMaxRadius = 6;  // cells: 3 sigma
   const int radius = std::min(static_cast<int>(std::ceil(3.0 * kSigma / kResolution)), kMaxRadius);
   const double inverse_two_sigma_squared = 1.0 / (2.0 * kSigma * kSigma);
-  for (const PlacedScan& placed : scans) {
-    forEachPoint(placed, [&](const Eigen::Vector2d& p, bool hit) {
-      if (!hit) return;
-      const Eigen::Vector2d c = toCell(p);
-      const int cx = floorToInt(c.x() + 0.5), cy = floorToInt(c.y() + 0.5);
-      // exp(-d^2 / (2 sigma^2)) is exp of the x part times exp of the y part.
-      double along_x[2 * kMaxRadius + 1];
-      for (int i = -radius; i <= radius; ++i) {
-        const double dx = (cx + i - c.x()) * kResolution;
-        along_x[i + radius] = std::exp(-dx * dx * inverse_two_sigma_squared);
-      }
-      for (int y = std::max(cy - radius, 0); y <= std::min(cy + radius, size_y_ - 1); ++y) {
-        const double dy = (y - c.y()) * kResolution;
-        const double along_y = std::exp(-dy * dy * inverse_two_sigma_squared);
-        for (int x = std::max(cx - radius, 0); x <= std::min(cx + radius, size_x_ - 1); ++x) {
-          float& cell = cells[static_cast<std::size_t>(y * size_x_ + x)];
-          cell = std::max(cell, static_cast<float>(along_x[x - cx + radius] * along_y));
-        }
-      }
-    });
-  }
+  forEachPoint(placed, [&](const Eigen::Vector2d& p, bool hit) {
+    if (!hit) return;
+    const Eigen::Vector2d c = toCell(p);
+    const int cx = floorToInt(c.x() + 0.5), cy = floorToInt(c.y() + 0.5);
+    // exp(-d^2 / (2 sigma^2)) is exp of the x part times exp of the y part.
+    double along_x[2 * kMaxRadius + 1];
+    for (int i = -radius; i <= radius; ++i) {
+      const double dx = (cx + i - c.x()) * kResolution;
+      along_x[i + radius] = std::exp(-dx * dx * inverse_two_sigma_squared);
+    }
+    for (int y = std::max(cy - radius, 0); y <= std::min(cy + radius, size_y_ - 1); ++y) {
+      const double dy = (y - c.y()) * kResolution;
+      const double along_y = std::exp(-dy * dy * inverse_two_sigma_squared);
+      for (int x = std::max(cx - radius, 0); x <= std::min(cx + radius, size_x_ - 1); ++x)
+        addHitValue(&cells[static_cast<std::size_t>(y * size_x_ + x)],
+                    static_cast<float>(along_x[x - cx + radius] * along_y));
+    }
+  });
 }
 
-void LikelihoodField::addFreeSpace(const std::vector<PlacedScan>& scans) {
+void LikelihoodField::addFreeSpace(const PlacedScan& placed) {
   std::vector<float>& cells = levels_[0];
-  for (const PlacedScan& placed : scans) {
-    const Eigen::Vector2d start = toCell(transformPoint(placed.pose, placed.scan.origin));
-    forEachPoint(placed, [&](const Eigen::Vector2d& p, bool) {
-      // Cell by cell from the laser to the ray's end (both inside the grid, which covers them).
-      const Eigen::Vector2d end = toCell(p);
-      const int steps = static_cast<int>(std::ceil((end - start).cwiseAbs().maxCoeff()));
-      const Eigen::Vector2d step = steps > 0 ? Eigen::Vector2d((end - start) / steps) : Eigen::Vector2d::Zero();
-      for (int i = 0; i < steps; ++i) {
-        const Eigen::Vector2d c = start + i * step;
-        // Rounded to the nearest cell; c >= 0 (the grid has a margin round every point), so truncating c + 0.5
-        // is floor(c + 0.5) without the call.
-        const int x = static_cast<int>(c.x() + 0.5), y = static_cast<int>(c.y() + 0.5);
-        float& cell = cells[static_cast<std::size_t>(y * size_x_ + x)];
-        if (cell < kNearHit) cell = kFreeValue;
-      }
-    });
-  }
+  const Eigen::Vector2d start = toCell(transformPoint(placed.pose, placed.scan.origin));
+  forEachPoint(placed, [&](const Eigen::Vector2d& p, bool) {
+    // Cell by cell from the laser to the ray's end (both inside the grid, which covers them).
+    const Eigen::Vector2d end = toCell(p);
+    const int steps = static_cast<int>(std::ceil((end - start).cwiseAbs().maxCoeff()));
+    const Eigen::Vector2d step = steps > 0 ? Eigen::Vector2d((end - start) / steps) : Eigen::Vector2d::Zero();
+    for (int i = 0; i < steps; ++i) {
+      const Eigen::Vector2d c = start + i * step;
+      // Rounded to the nearest cell; c >= 0 (the grid has a margin round every point), so truncating c + 0.5
+      // is floor(c + 0.5) without the call.
+      const int x = static_cast<int>(c.x() + 0.5), y = static_cast<int>(c.y() + 0.5);
+      float& cell = cells[static_cast<std::size_t>(y * size_x_ + x)];
+      if (cell < kNearHit) cell = kFreeValue;
+    }
+  });
 }
 
 void LikelihoodField::buildLevels() {
@@ -123,21 +185,6 @@ void LikelihoodField::buildLevels() {
         cells[static_cast<std::size_t>(y * size_x_ + x)] =
             std::max(std::max(at(x, y), at(x + half, y)), std::max(at(x, y + half), at(x + half, y + half)));
   }
-}
-
-double LikelihoodField::interpolate(const Eigen::Vector2d& point) const {
-  const Eigen::Vector2d c = toCell(point);
-  const int x = floorToInt(c.x()), y = floorToInt(c.y());
-  const double fx = x, fy = y;
-  const double ax = c.x() - fx, ay = c.y() - fy;
-  if (x >= 0 && y >= 0 && x + 1 < size_x_ && y + 1 < size_y_) {
-    // All four inside (nearly always): read them without value()'s checks, the same sum.
-    const float* low = &levels_[0][static_cast<std::size_t>(y) * size_x_ + x];
-    const float* high = low + size_x_;
-    return (1.0 - ay) * ((1.0 - ax) * low[0] + ax * low[1]) + ay * ((1.0 - ax) * high[0] + ax * high[1]);
-  }
-  return (1.0 - ay) * ((1.0 - ax) * value(x, y) + ax * value(x + 1, y)) +
-         ay * ((1.0 - ax) * value(x, y + 1) + ax * value(x + 1, y + 1));
 }
 
 }  // namespace hector_style_mapping

@@ -89,5 +89,65 @@ TEST(LikelihoodField, NoPointsNoGrid) {
   EXPECT_EQ(field.interpolate({0.0, 0.0}), 0.0);
 }
 
+// A scan of `beams` beams over a full turn, ranges 0.5-`far` m, every fifth beam a free ray (no return).
+ScanPoints randomScan(std::mt19937* rng, int beams, double far) {
+  std::uniform_real_distribution<double> range(0.5, far);
+  ScanPoints scan;
+  scan.origin = {0.1, 0.0};
+  for (int i = 0; i < beams; ++i) {
+    const double angle = -M_PI + 2 * M_PI * i / beams, r = range(*rng);
+    (i % 5 == 0 ? scan.free_rays : scan.points).emplace_back(r * std::cos(angle), r * std::sin(angle));
+  }
+  return scan;
+}
+
+// Every level of `a` and `b`, cell for cell, over the same grid in the map frame.
+void expectSameField(const LikelihoodField& a, const LikelihoodField& b, const char* what) {
+  ASSERT_EQ(a.sizeX(), b.sizeX()) << what;
+  ASSERT_EQ(a.sizeY(), b.sizeY()) << what;
+  const Eigen::Vector2d somewhere{0.37, -1.21};
+  EXPECT_EQ(a.toCell(somewhere), b.toCell(somewhere)) << what;
+  long differing = 0, free = 0, hit = 0;
+  for (int level = 0; level < LikelihoodField::kLevels; ++level)
+    for (int y = 0; y < a.sizeY(); ++y)
+      for (int x = 0; x < a.sizeX(); ++x) {
+        differing += a.blockMax(level, x, y) != b.blockMax(level, x, y);
+        if (level == 0) free += a.value(x, y) == LikelihoodField::kFreeValue, hit += a.value(x, y) > 0.5f;
+      }
+  EXPECT_EQ(differing, 0) << what;
+  EXPECT_GT(free, 100) << what;  // not vacuous: rays and hits of every kind
+  EXPECT_GT(hit, 100) << what;
+}
+
+// A mapper searches each scan against the same recent scans and the last one: the field built on top of the
+// recent scans' is the field of them all on its lattice, whether the last scan lies inside their grid or reaches
+// past it (the grid grows), and with a scan or a base that has no point.
+TEST(LikelihoodField, BuiltOnTopItIsTheFieldOfAllTheScans) {
+  std::mt19937 rng(5);
+  std::vector<PlacedScan> recent;
+  for (int i = 0; i < 3; ++i) recent.push_back({Pose2D{0.3 * i, 0.1 * i, 0.2 * i}, randomScan(&rng, 180, 4.0)});
+  const LikelihoodField base(recent);
+  for (const PlacedScan& last : {PlacedScan{Pose2D{0.5, 0.2, 0.7}, randomScan(&rng, 180, 3.0)},   // inside
+                                 PlacedScan{Pose2D{2.0, -1.0, -0.4}, randomScan(&rng, 180, 6.0)}}) {  // past
+    std::vector<PlacedScan> all = recent;
+    all.push_back(last);
+    LikelihoodField on_top, all_at_once;
+    on_top.buildOnTop(base, last);
+    all_at_once.build(all, base.latticePoint());
+    expectSameField(on_top, all_at_once, "on top");
+  }
+  ScanPoints nothing;
+  nothing.points = {{NAN, 1.0}};
+  const PlacedScan empty{Pose2D{5.0, 5.0, 0.0}, nothing};  // its laser far off: the grid takes it in too
+  std::vector<PlacedScan> all = recent;
+  all.push_back(empty);
+  LikelihoodField on_top, all_at_once;
+  on_top.buildOnTop(base, empty);
+  all_at_once.build(all, base.latticePoint());
+  expectSameField(on_top, all_at_once, "an empty scan on top");
+  on_top.buildOnTop(LikelihoodField({empty}), recent[1]);
+  expectSameField(on_top, LikelihoodField({recent[1]}), "on an empty base");
+}
+
 }  // namespace
 }  // namespace hector_style_mapping

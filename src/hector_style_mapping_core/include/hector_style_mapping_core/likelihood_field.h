@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include "hector_style_mapping_core/floor_to_int.h"
 #include "hector_style_mapping_core/pose_2d.h"
 #include "hector_style_mapping_core/scan_points.h"
 
@@ -29,6 +30,10 @@ struct PlacedScan {
 //  - Elsewhere (never seen): 0.
 // Points outside the grid read 0. For branch and bound it also holds, per level l, the largest value over each
 // block of 2^l x 2^l cells (blockMax), an upper bound on any point's value within the block.
+// The cells' centres lie on a lattice kResolution apart through the grid's lowest corner: each field's own, so
+// that where the scans' walls fall between cell centres changes from field to field and the grid's pull on them
+// averages out over a log instead of adding up (with one lattice for all, fixed in the map frame, the absolute
+// error on Radish's logs doubled: docs/MAPPING.md). A field built on top of another keeps the other's lattice.
 class LikelihoodField {
  public:
   static constexpr double kResolution = 0.05;  // m per cell
@@ -43,11 +48,24 @@ class LikelihoodField {
   // The grid covering `scans` (their hits, rays and free rays, with a margin); empty without finite points.
   explicit LikelihoodField(const std::vector<PlacedScan>& scans) { build(scans); }
   LikelihoodField() = default;  // empty
-  // Builds it again from `scans`, reusing the memory (a mapper rebuilds it with every map update).
+  // Builds it again from `scans`, reusing the memory (a mapper rebuilds it with every map update), with its
+  // cells' centres on the lattice through the grid's lowest corner, or through `lattice_point`.
   void build(const std::vector<PlacedScan>& scans);
+  void build(const std::vector<PlacedScan>& scans, const Eigen::Vector2d& lattice_point);
+  // The field of `base`'s scans and `scan` on base's lattice, the same cell for cell as build() of them all
+  // through base.latticePoint(), at the cost of one scan's hits and rays (and the copy and the levels): a mapper
+  // searches each scan against the same few recent scans and the last one. A base without finite points counts
+  // as no scans. `base` must not be this field.
+  void buildOnTop(const LikelihoodField& base, const PlacedScan& scan);
+  // A cell centre of the lattice (map frame).
+  const Eigen::Vector2d& latticePoint() const { return lattice_point_; }
+  // The lattice point build(scans) takes: the lowest corner of the grid round them.
+  static Eigen::Vector2d ownLatticePoint(const std::vector<PlacedScan>& scans);
 
   // Cell coordinates of a map-frame point: cell (i, j)'s centre at (i, j).
-  Eigen::Vector2d toCell(const Eigen::Vector2d& point) const { return (point - origin_) / kResolution; }
+  Eigen::Vector2d toCell(const Eigen::Vector2d& point) const {
+    return (point - lattice_point_) / kResolution - first_cell_;
+  }
   // The value of cell (x, y); 0 outside the grid.
   float value(int x, int y) const {
     return x >= 0 && y >= 0 && x < size_x_ && y < size_y_ ? levels_[0][static_cast<std::size_t>(y * size_x_ + x)]
@@ -63,18 +81,34 @@ class LikelihoodField {
                                 [static_cast<std::size_t>(std::max(y, 0) * size_x_ + std::max(x, 0))];
     return x < 0 || y < 0 ? std::max(inside, 0.0f) : inside;
   }
-  // Bilinear interpolation between the cell centres round a map-frame point.
-  double interpolate(const Eigen::Vector2d& point) const;
+  // Bilinear interpolation between the cell centres round a map-frame point. Inline: the search's refinement
+  // calls it for every point of every candidate (a quarter of the mapper's time on a dense log).
+  double interpolate(const Eigen::Vector2d& point) const {
+    const Eigen::Vector2d c = toCell(point);
+    const int x = floorToInt(c.x()), y = floorToInt(c.y());
+    const double ax = c.x() - x, ay = c.y() - y;
+    if (x >= 0 && y >= 0 && x + 1 < size_x_ && y + 1 < size_y_) {
+      // All four inside (nearly always): read them without value()'s checks, the same sum.
+      const float* low = &levels_[0][static_cast<std::size_t>(y) * size_x_ + x];
+      const float* high = low + size_x_;
+      return (1.0 - ay) * ((1.0 - ax) * low[0] + ax * low[1]) + ay * ((1.0 - ax) * high[0] + ax * high[1]);
+    }
+    return (1.0 - ay) * ((1.0 - ax) * value(x, y) + ax * value(x + 1, y)) +
+           ay * ((1.0 - ax) * value(x, y + 1) + ax * value(x + 1, y + 1));
+  }
 
   int sizeX() const { return size_x_; }
   int sizeY() const { return size_y_; }
 
  private:
-  void addHits(const std::vector<PlacedScan>& scans);
-  void addFreeSpace(const std::vector<PlacedScan>& scans);
+  // Sizes the grid to cells [first, last] of the lattice through `lattice_point`, all 0.
+  void allocate(const Eigen::Vector2d& lattice_point, const Eigen::Vector2i& first, const Eigen::Vector2i& last);
+  void addHits(const PlacedScan& placed);
+  void addFreeSpace(const PlacedScan& placed);
   void buildLevels();
 
-  Eigen::Vector2d origin_{0.0, 0.0};  // map-frame position of cell (0, 0)'s centre
+  Eigen::Vector2d lattice_point_{0.0, 0.0};  // map frame
+  Eigen::Vector2d first_cell_{0.0, 0.0};     // cell (0, 0) here, in lattice cells from lattice_point_
   int size_x_ = 0;
   int size_y_ = 0;
   // levels_[l][y * size_x_ + x] = blockMax(l, x, y); cells past the grid's end count as 0.

@@ -23,11 +23,23 @@ inline double normalizeAngle(double angle) {
 // The shortest signed rotation that takes angle `from` to angle `to`, in (-pi, pi].
 inline double angleDifference(double to, double from) { return normalizeAngle(to - from); }
 
-// A point given in the frame described by `pose`, expressed in the frame `pose` is given in.
+// Points given in the frame described by `pose`, expressed in the frame `pose` is given in: its cosine and sine
+// taken once for a whole scan (the compiler cannot hoist them out of a loop: they may set errno).
+class PoseTransform {
+ public:
+  explicit PoseTransform(const Pose2D& pose)
+      : x_(pose.x), y_(pose.y), cos_(std::cos(pose.theta)), sin_(std::sin(pose.theta)) {}
+  Eigen::Vector2d operator()(const Eigen::Vector2d& point) const {
+    return {x_ + cos_ * point.x() - sin_ * point.y(), y_ + sin_ * point.x() + cos_ * point.y()};
+  }
+
+ private:
+  double x_, y_, cos_, sin_;
+};
+
+// One point given in the frame described by `pose`, expressed in the frame `pose` is given in.
 inline Eigen::Vector2d transformPoint(const Pose2D& pose, const Eigen::Vector2d& point) {
-  const double c = std::cos(pose.theta);
-  const double s = std::sin(pose.theta);
-  return {pose.x + c * point.x() - s * point.y(), pose.y + s * point.x() + c * point.y()};
+  return PoseTransform(pose)(point);
 }
 
 // `b` given in the frame of `a`, expressed in the frame `a` is given in (a then b).

@@ -128,6 +128,9 @@ class SlamProcessor {
   void adopt(LoopClosureUpdate update);
   // Hands the scan just mapped to loop closure as a keyframe (and adopts a closure found inline).
   void addKeyframe(const ScanPoints& scan);
+  // The field the search matches against: the window's scans' (rebuilt as the window changes) with the
+  // unmapped scan's on top.
+  const LikelihoodField& searchField();
   // The search's window for this scan; records the interval.
   SearchWindow searchWindow(double seconds_since_last_scan);
   // Gauss-Newton from `start` through every level, coarsest first; the finest level's match.
@@ -146,10 +149,12 @@ class SlamProcessor {
   Pose2D previous_pose_;  // pose() before the last scan: with it, the search's prior
   std::vector<double> recent_intervals_;  // s, the last kRecentIntervals known ones
   double last_interval_ = 0.0;  // s between the last scan and the one before (<= 0: not known)
-  // The last kSearchedScans scans that updated the map, the last scan if it did not, and the search's field
-  // built from them (on demand).
+  // The last kSearchedScans scans that updated the map, the last scan if it did not, and the search's fields
+  // built from them on demand (searchField()): the window's alone, and with the unmapped scan on top.
   std::vector<PlacedScan> window_;
   std::optional<PlacedScan> unmapped_scan_;
+  LikelihoodField window_field_;
+  bool window_field_stale_ = true;
   LikelihoodField field_;
   bool field_stale_ = true;
   LoopClosureThreading threading_;
