@@ -145,7 +145,21 @@ Pose2D refine(const LikelihoodField& field, const std::vector<Eigen::Vector2d>& 
   return best;
 }
 
+// The window's half-width in cells. Less a hair: 0.2 / 0.05 is 4.000000000000001, and a window of 0.2 m is 4
+// cells, not 5.
+int windowCells(const SearchWindow& window) {
+  return static_cast<int>(std::ceil(std::max(window.linear, 0.0) / LikelihoodField::kResolution - 1e-9));
+}
+
 }  // namespace
+
+int searchLevels(const SearchWindow& window) {
+  // The branch and bound starts from the finest blocks as wide as the window.
+  const int width = 2 * windowCells(window) + 1;
+  int level = 0;
+  while (level + 1 < LikelihoodField::kLevels && (1 << level) < width) ++level;
+  return level + 1;
+}
 
 namespace {
 
@@ -166,8 +180,7 @@ SearchResult search(const LikelihoodField& field, const ScanPoints& scan, const 
   const double angle_step = angularStep(points);
   result.angle_step = angle_step;
   const int angles = static_cast<int>(std::ceil(std::max(window.angular, 0.0) / angle_step));
-  // Less a hair: 0.2 / 0.05 is 4.000000000000001, and a window of 0.2 m is 4 cells, not 5.
-  const int shifts = static_cast<int>(std::ceil(std::max(window.linear, 0.0) / resolution - 1e-9));
+  const int shifts = windowCells(window);
 
   // Each rotation's points as cells, the translation at the centre. The buffers are kept from one search to the
   // next (a search per scan, a hundred rotations or more each on a dense log).
@@ -184,9 +197,8 @@ SearchResult search(const LikelihoodField& field, const ScanPoints& scan, const 
     }
   }
 
-  // The coarsest blocks that still fit across the window four times.
-  int level = 0;
-  while (level + 1 < LikelihoodField::kLevels && (1 << level) < 2 * shifts + 1) ++level;
+  // Fewer levels built than the window would start from: the same answer from finer blocks, more of them.
+  const int level = std::min(searchLevels(window), field.levels()) - 1;
   const Eigen::Vector2d expected_cells = (prior.expected - Eigen::Vector2d(centre.x, centre.y)) / resolution;
   BranchAndBound bnb(field, rotated, shifts, angles, expected_cells, std::max(prior.weight, 0.0) * resolution);
   if (excluded_radius >= 0.0) {

@@ -63,6 +63,7 @@ void LikelihoodField::allocate(const Eigen::Vector2d& lattice_point, const Eigen
   size_x_ = last.x() - first.x() + 1;
   size_y_ = last.y() - first.y() + 1;
   levels_[0].assign(static_cast<std::size_t>(size_x_) * static_cast<std::size_t>(size_y_), 0.0f);
+  levels_ready_ = 1;
 }
 
 Eigen::Vector2d LikelihoodField::ownLatticePoint(const std::vector<PlacedScan>& scans) {
@@ -72,27 +73,30 @@ Eigen::Vector2d LikelihoodField::ownLatticePoint(const std::vector<PlacedScan>& 
   return lowest - Eigen::Vector2d::Constant(kMargin);
 }
 
-void LikelihoodField::build(const std::vector<PlacedScan>& scans) { build(scans, ownLatticePoint(scans)); }
+void LikelihoodField::build(const std::vector<PlacedScan>& scans, int levels) {
+  build(scans, ownLatticePoint(scans), levels);
+}
 
-void LikelihoodField::build(const std::vector<PlacedScan>& scans, const Eigen::Vector2d& lattice_point) {
+void LikelihoodField::build(const std::vector<PlacedScan>& scans, const Eigen::Vector2d& lattice_point, int levels) {
   Eigen::Vector2d lowest = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
   Eigen::Vector2d highest = -lowest;
   bool any = false;
   for (const PlacedScan& placed : scans) any = growExtent(placed, &lowest, &highest) || any;
   levels_.resize(kLevels);
   size_x_ = size_y_ = 0;
+  levels_ready_ = kLevels;  // all of an empty grid's
   if (!any) return;
   Eigen::Vector2i first, last;
   cellRange(lattice_point, lowest, highest, &first, &last);
   allocate(lattice_point, first, last);
   for (const PlacedScan& placed : scans) addHits(placed);
   for (const PlacedScan& placed : scans) addFreeSpace(placed);
-  buildLevels();
+  ensureLevels(levels);
 }
 
-void LikelihoodField::buildOnTop(const LikelihoodField& base, const PlacedScan& scan) {
+void LikelihoodField::buildOnTop(const LikelihoodField& base, const PlacedScan& scan, int levels) {
   if (base.size_x_ == 0) {  // no finite point below: the scan alone
-    build({scan});
+    build({scan}, levels);
     return;
   }
   Eigen::Vector2d lowest = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
@@ -113,7 +117,7 @@ void LikelihoodField::buildOnTop(const LikelihoodField& base, const PlacedScan& 
     addHits(scan);
     addFreeSpace(scan);
   }
-  buildLevels();
+  ensureLevels(levels);
 }
 
 void LikelihoodField::addHits(const PlacedScan& placed) {
@@ -160,8 +164,8 @@ void LikelihoodField::addFreeSpace(const PlacedScan& placed) {
   });
 }
 
-void LikelihoodField::buildLevels() {
-  for (int level = 1; level < kLevels; ++level) {
+void LikelihoodField::ensureLevels(int levels) {
+  for (int level = levels_ready_; level < std::min(levels, kLevels); ++level, levels_ready_ = level) {
     const std::vector<float>& below = levels_[level - 1];
     std::vector<float>& cells = levels_[level];
     cells.resize(below.size());

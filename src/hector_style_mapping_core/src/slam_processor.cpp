@@ -101,8 +101,8 @@ void SlamProcessor::update(const ScanPoints& scan, const Pose2D* guess, double s
     const TranslationPrior prior{expected, guess_usable ? options_.search_motion_weight
                                                         : motionPriorWeight(options_.search_motion_weight,
                                                                             last_interval_, seconds_since_last_scan)};
-    const SearchResult found =
-        correlativeSearch(searchField(), scan, start, searchWindow(seconds_since_last_scan), prior);
+    const SearchWindow window = searchWindow(seconds_since_last_scan);
+    const SearchResult found = correlativeSearch(searchField(searchLevels(window)), scan, start, window, prior);
     // Gauss-Newton on the finest level then settles it on the whole map, unless it wanders off further than
     // the search's own resolution: then the map disagrees with the recent scans (drift), and they know better.
     last_match_ = matcher_.matchWithDetails(map_.finest(), scan, found.pose, kFinestLevelIterations);
@@ -197,12 +197,13 @@ void SlamProcessor::finishLoopClosure() {
   adoptClosedLoop();
 }
 
-const LikelihoodField& SlamProcessor::searchField() {
+const LikelihoodField& SlamProcessor::searchField(int levels) {
   if (window_field_stale_) {
-    window_field_.build(window_);
+    window_field_.build(window_, levels);
     window_field_stale_ = false;
     field_stale_ = true;
   }
+  window_field_.ensureLevels(levels);
   if (!unmapped_scan_) return window_field_;
   if (field_stale_) {
     // The unmapped scan on top of the window's field when that gives the field of them all on its own lattice
@@ -210,12 +211,13 @@ const LikelihoodField& SlamProcessor::searchField() {
     std::vector<PlacedScan> scans = window_;
     scans.push_back(*unmapped_scan_);
     if (LikelihoodField::ownLatticePoint(scans) == window_field_.latticePoint()) {
-      field_.buildOnTop(window_field_, *unmapped_scan_);
+      field_.buildOnTop(window_field_, *unmapped_scan_, levels);
     } else {
-      field_.build(scans);
+      field_.build(scans, levels);
     }
     field_stale_ = false;
   }
+  field_.ensureLevels(levels);
   return field_;
 }
 

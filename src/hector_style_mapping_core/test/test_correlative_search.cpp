@@ -81,6 +81,30 @@ TEST(CorrelativeSearch, BranchAndBoundFindsTheBruteForceBest) {
   }
 }
 
+// A field with fewer levels than the window would start from gives the same answer (branch and bound is exact),
+// from more, finer blocks.
+TEST(CorrelativeSearch, FewerLevelsTheSameAnswer) {
+  const Pose2D truth{1.0, 0.2, 0.3};
+  const testing::SyntheticWorld world = testing::smallMaze();
+  testing::LaserConfig laser;
+  laser.range_noise_sigma = 0.01;
+  std::mt19937 rng(21);
+  const std::vector<PlacedScan> recent = {{truth, world.scan(truth, laser, &rng)}};
+  const ScanPoints scan = world.scan(truth, laser, &rng);
+  const SearchWindow window{0.6, 0.45};
+  EXPECT_EQ(searchLevels(window), 6);  // 25 cells across: blocks of 32
+  EXPECT_EQ(searchLevels({0.2, 0.1}), 5);  // 9 cells across: blocks of 16
+  LikelihoodField full(recent), few;
+  few.build(recent, 2);
+  const Pose2D centre{1.4, -0.1, 0.3 + 20 * kDegree};
+  const SearchResult a = correlativeSearch(full, scan, centre, window), b = correlativeSearch(few, scan, centre, window);
+  EXPECT_EQ(a.pose.x, b.pose.x);
+  EXPECT_EQ(a.pose.y, b.pose.y);
+  EXPECT_EQ(a.pose.theta, b.pose.theta);
+  EXPECT_LT(std::hypot(b.pose.x - truth.x, b.pose.y - truth.y), 0.01);
+  EXPECT_GT(b.candidates, a.candidates);  // from blocks of 2 cells, not 32
+}
+
 TEST(CorrelativeSearch, StaysInsideItsWindow) {
   const Pose2D truth{1.0, 0.2, 0.3};
   const Scene s = sceneAt(truth);

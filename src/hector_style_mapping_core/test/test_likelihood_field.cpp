@@ -149,5 +149,17 @@ TEST(LikelihoodField, BuiltOnTopItIsTheFieldOfAllTheScans) {
   expectSameField(on_top, LikelihoodField({recent[1]}), "on an empty base");
 }
 
+// A search reads only the levels its window needs; those built later are the ones a full build makes.
+TEST(LikelihoodField, LevelsBuiltLaterAreThoseOfAFullBuild) {
+  std::mt19937 rng(9);
+  const std::vector<PlacedScan> scans = {{Pose2D{0.2, -0.1, 0.3}, randomScan(&rng, 180, 5.0)}};
+  LikelihoodField partial;
+  partial.build(scans, 2);
+  EXPECT_EQ(partial.levels(), 2);
+  partial.ensureLevels(LikelihoodField::kLevels);
+  EXPECT_EQ(partial.levels(), LikelihoodField::kLevels);
+  expectSameField(partial, LikelihoodField(scans), "levels built later");
+}
+
 }  // namespace
 }  // namespace hector_style_mapping

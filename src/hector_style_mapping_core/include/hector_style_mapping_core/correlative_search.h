@@ -39,6 +39,10 @@ struct SearchResult {
 SearchResult correlativeSearch(const LikelihoodField& field, const ScanPoints& scan, const Pose2D& centre,
                                const SearchWindow& window, const TranslationPrior& prior = TranslationPrior{});
 
+// The field's levels a search over `window` reads (LikelihoodField::ensureLevels): its branch and bound starts
+// from the finest blocks as wide as the window.
+int searchLevels(const SearchWindow& window);
+
 // The best fit elsewhere: correlativeSearch (no prior) over the poses whose translation lies more than
 // `excluded_radius` (m, along x or along y) from `excluded`. Score -inf when the window holds none. A second fit
 // nearly as good as the first says the scan cannot tell the two places apart (a corridor, a row of look-alike

@@ -49,14 +49,20 @@ class LikelihoodField {
   explicit LikelihoodField(const std::vector<PlacedScan>& scans) { build(scans); }
   LikelihoodField() = default;  // empty
   // Builds it again from `scans`, reusing the memory (a mapper rebuilds it with every map update), with its
-  // cells' centres on the lattice through the grid's lowest corner, or through `lattice_point`.
-  void build(const std::vector<PlacedScan>& scans);
-  void build(const std::vector<PlacedScan>& scans, const Eigen::Vector2d& lattice_point);
+  // cells' centres on the lattice through the grid's lowest corner, or through `lattice_point`; block maxima
+  // for the first `levels` levels (see ensureLevels()).
+  void build(const std::vector<PlacedScan>& scans, int levels = kLevels);
+  void build(const std::vector<PlacedScan>& scans, const Eigen::Vector2d& lattice_point, int levels = kLevels);
   // The field of `base`'s scans and `scan` on base's lattice, the same cell for cell as build() of them all
   // through base.latticePoint(), at the cost of one scan's hits and rays (and the copy and the levels): a mapper
   // searches each scan against the same few recent scans and the last one. A base without finite points counts
   // as no scans. `base` must not be this field.
-  void buildOnTop(const LikelihoodField& base, const PlacedScan& scan);
+  void buildOnTop(const LikelihoodField& base, const PlacedScan& scan, int levels = kLevels);
+  // Builds the block maxima of levels up to `levels` - 1 that are not built yet. A search reads only the levels
+  // its window needs (a mapper's small windows on a dense log leave the coarsest out: a tenth of its time).
+  void ensureLevels(int levels);
+  // Levels whose block maxima are built: blockMax() is for those only.
+  int levels() const { return levels_ready_; }
   // A cell centre of the lattice (map frame).
   const Eigen::Vector2d& latticePoint() const { return lattice_point_; }
   // The lattice point build(scans) takes: the lowest corner of the grid round them.
@@ -72,7 +78,7 @@ class LikelihoodField {
                                                          : 0.0f;
   }
   // The largest value over cells [x, x + 2^level) x [y, y + 2^level), cells outside counting as 0; level 0 is
-  // value(). A block reaching over the grid's low edge may get more than its largest value: still a bound.
+  // value(). For level < levels(). A block reaching over the grid's low edge may get more than its largest value: still a bound.
   float blockMax(int level, int x, int y) const {
     const int size = 1 << level;
     if (x + size <= 0 || y + size <= 0 || x >= size_x_ || y >= size_y_ || size_x_ == 0) return 0.0f;
@@ -105,7 +111,6 @@ class LikelihoodField {
   void allocate(const Eigen::Vector2d& lattice_point, const Eigen::Vector2i& first, const Eigen::Vector2i& last);
   void addHits(const PlacedScan& placed);
   void addFreeSpace(const PlacedScan& placed);
-  void buildLevels();
 
   Eigen::Vector2d lattice_point_{0.0, 0.0};  // map frame
   Eigen::Vector2d first_cell_{0.0, 0.0};     // cell (0, 0) here, in lattice cells from lattice_point_
@@ -113,6 +118,7 @@ class LikelihoodField {
   int size_y_ = 0;
   // levels_[l][y * size_x_ + x] = blockMax(l, x, y); cells past the grid's end count as 0.
   std::vector<std::vector<float>> levels_;
+  int levels_ready_ = kLevels;  // levels_[0 .. levels_ready_ - 1] are built
 };
 
 }  // namespace hector_style_mapping

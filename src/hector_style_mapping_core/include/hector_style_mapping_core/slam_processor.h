@@ -128,9 +128,9 @@ class SlamProcessor {
   void adopt(LoopClosureUpdate update);
   // Hands the scan just mapped to loop closure as a keyframe (and adopts a closure found inline).
   void addKeyframe(const ScanPoints& scan);
-  // The field the search matches against: the window's scans' (rebuilt as the window changes) with the
-  // unmapped scan's on top.
-  const LikelihoodField& searchField();
+  // The field the search matches against, with `levels` levels: the window's scans' (rebuilt as the window
+  // changes) with the unmapped scan's on top.
+  const LikelihoodField& searchField(int levels);
   // The search's window for this scan; records the interval.
   SearchWindow searchWindow(double seconds_since_last_scan);
   // Gauss-Newton from `start` through every level, coarsest first; the finest level's match.
