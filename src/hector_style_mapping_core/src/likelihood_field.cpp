@@ -47,6 +47,25 @@ void cellRange(const Eigen::Vector2d& lattice_point, const Eigen::Vector2d& lowe
   *last = Eigen::Vector2i(-floorToInt(-high.x()), -floorToInt(-high.y()));
 }
 
+// row[k] = exp(-q (offset + k - radius)^2) for k = 0 .. 2 radius (cells from a hit `offset` cells from the nearest
+// cell centre): from three exp calls, not 2 radius + 1, as exp(-q offset^2) exp(-2 q offset i) exp(-q i^2). Exp was
+// a seventh of the mapper's time on a dense log; the products differ from the direct values by a few ulp.
+void gaussianRow(double offset, int radius, double q, double* row) {
+  const double centre = std::exp(-q * offset * offset);
+  const double ratio = std::exp(-2.0 * q * offset);
+  const double squares = std::exp(-q);  // exp(-q i^2) = squares^(i^2)
+  // Outward from the centre: factor_i = ratio^i, square_i = exp(-q i^2).
+  row[radius] = centre;
+  double up = 1.0, down = 1.0, square = 1.0, odd = squares;  // square_(i+1) = square_i * squares^(2i+1)
+  const double inverse_ratio = 1.0 / ratio;
+  for (int i = 1; i <= radius; ++i) {
+    up *= ratio, down *= inverse_ratio;
+    square *= odd, odd *= squares * squares;
+    row[radius + i] = centre * up * square;
+    row[radius - i] = centre * down * square;
+  }
+}
+
 // A cell with a hit's value `v` added: the largest value, except that a cell where a ray passed stays free
 // unless the hit lies within 2 sigma (what build() gives adding every hit before any ray).
 inline void addHitValue(float* cell, float v) {
@@ -124,24 +143,19 @@ void LikelihoodField::addHits(const PlacedScan& placed) {
   std::vector<float>& cells = levels_[0];
   constexpr int kMaxRadius = 6;  // cells: 3 sigma
   const int radius = std::min(static_cast<int>(std::ceil(3.0 * kSigma / kResolution)), kMaxRadius);
-  const double inverse_two_sigma_squared = 1.0 / (2.0 * kSigma * kSigma);
+  const double q = kResolution * kResolution / (2.0 * kSigma * kSigma);  // per cell squared
   forEachPoint(placed, [&](const Eigen::Vector2d& p, bool hit) {
     if (!hit) return;
     const Eigen::Vector2d c = toCell(p);
     const int cx = floorToInt(c.x() + 0.5), cy = floorToInt(c.y() + 0.5);
     // exp(-d^2 / (2 sigma^2)) is exp of the x part times exp of the y part.
-    double along_x[2 * kMaxRadius + 1];
-    for (int i = -radius; i <= radius; ++i) {
-      const double dx = (cx + i - c.x()) * kResolution;
-      along_x[i + radius] = std::exp(-dx * dx * inverse_two_sigma_squared);
-    }
-    for (int y = std::max(cy - radius, 0); y <= std::min(cy + radius, size_y_ - 1); ++y) {
-      const double dy = (y - c.y()) * kResolution;
-      const double along_y = std::exp(-dy * dy * inverse_two_sigma_squared);
+    double along_x[2 * kMaxRadius + 1], along_y[2 * kMaxRadius + 1];
+    gaussianRow(cx - c.x(), radius, q, along_x);
+    gaussianRow(cy - c.y(), radius, q, along_y);
+    for (int y = std::max(cy - radius, 0); y <= std::min(cy + radius, size_y_ - 1); ++y)
       for (int x = std::max(cx - radius, 0); x <= std::min(cx + radius, size_x_ - 1); ++x)
         addHitValue(&cells[static_cast<std::size_t>(y * size_x_ + x)],
-                    static_cast<float>(along_x[x - cx + radius] * along_y));
-    }
+                    static_cast<float>(along_x[x - cx + radius] * along_y[y - cy + radius]));
   });
 }
 
