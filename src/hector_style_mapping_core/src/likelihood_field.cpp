@@ -66,10 +66,12 @@ void gaussianRow(double offset, int radius, double q, double* row) {
   }
 }
 
-// A cell with a hit's value `v` added: the largest value, except that a cell where a ray passed stays free
+// A cell's value with a hit's value `v` added: the largest value, except that a cell where a ray passed stays free
 // unless the hit lies within 2 sigma (what build() gives adding every hit before any ray).
-inline void addHitValue(float* cell, float v) {
-  if (*cell != LikelihoodField::kFreeValue || v >= kNearHit) *cell = std::max(*cell, v);
+inline float withHit(float cell, float v) {
+  // Without a branch, so that a row of the blur is one vector operation.
+  const bool stays_free = cell == LikelihoodField::kFreeValue && v < kNearHit;
+  return stays_free ? cell : std::max(cell, v);
 }
 
 }  // namespace
@@ -152,10 +154,12 @@ void LikelihoodField::addHits(const PlacedScan& placed) {
     double along_x[2 * kMaxRadius + 1], along_y[2 * kMaxRadius + 1];
     gaussianRow(cx - c.x(), radius, q, along_x);
     gaussianRow(cy - c.y(), radius, q, along_y);
-    for (int y = std::max(cy - radius, 0); y <= std::min(cy + radius, size_y_ - 1); ++y)
-      for (int x = std::max(cx - radius, 0); x <= std::min(cx + radius, size_x_ - 1); ++x)
-        addHitValue(&cells[static_cast<std::size_t>(y * size_x_ + x)],
-                    static_cast<float>(along_x[x - cx + radius] * along_y[y - cy + radius]));
+    const int x_first = std::max(cx - radius, 0), x_last = std::min(cx + radius, size_x_ - 1);
+    for (int y = std::max(cy - radius, 0); y <= std::min(cy + radius, size_y_ - 1); ++y) {
+      float* row = &cells[static_cast<std::size_t>(y) * size_x_];
+      const double along = along_y[y - cy + radius];
+      for (int x = x_first; x <= x_last; ++x) row[x] = withHit(row[x], static_cast<float>(along_x[x - cx + radius] * along));
+    }
   });
 }
 
