@@ -189,11 +189,10 @@ SearchResult search(const LikelihoodField& field, const ScanPoints& scan, const 
   for (int a = -angles; a <= angles; ++a) {
     const PoseTransform to_map(Pose2D{centre.x, centre.y, centre.theta + a * angle_step});
     std::vector<Eigen::Vector2i>& cells = rotated[static_cast<std::size_t>(a + angles)];
-    cells.clear();
-    cells.reserve(points.size());
-    for (const Eigen::Vector2d& p : points) {
-      const Eigen::Vector2d c = field.toCell(to_map(p));
-      cells.emplace_back(floorToInt(c.x() + 0.5), floorToInt(c.y() + 0.5));
+    cells.resize(points.size());  // written by index, not appended: the loop vectorises
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const Eigen::Vector2d c = field.toCell(to_map(points[i]));
+      cells[i] = Eigen::Vector2i(floorToInt(c.x() + 0.5), floorToInt(c.y() + 0.5));
     }
   }
 
