@@ -272,13 +272,8 @@ TEST(LoopClosureWorker, InTheBackgroundFindsWhatInlineFinds) {
                                  options.map_resolution)), 0.0);  // the outer wall below the start
 }
 
-// A SlamProcessor round the ring with loop closure in the background: the closures it adopts along the way
-// leave its map exactly as a redraw of its keyframes at their final poses (nothing missing, nothing drawn
-// twice, nothing half-written), and its keyframes as near the truth as inline.
-TEST(LoopClosureWorker, SlamProcessorInTheBackgroundKeepsItsMapTheRedrawOfItsKeyframes) {
-  const testing::SyntheticWorld world = ring();
-  const std::vector<Pose2D> truth = tour();
-  const testing::LaserConfig laser = ringLaser();
+// A SlamProcessor's settings for the ring: the search and loop closure on.
+MapperOptions ringMapperOptions() {
   MapperOptions options;
   options.map_resolution = 0.05;
   options.map_size = 512;
@@ -286,6 +281,17 @@ TEST(LoopClosureWorker, SlamProcessorInTheBackgroundKeepsItsMapTheRedrawOfItsKey
   options.search_window_angular = 1.7;  // the tour turns its corners in one step
   options.loop_closure = true;
   options.map_update_distance_thresh = 0.3;  // every scan of the tour a keyframe
+  return options;
+}
+
+// A SlamProcessor round the ring with loop closure in the background: the closures it adopts along the way
+// leave its map exactly as a redraw of its keyframes at their final poses (nothing missing, nothing drawn
+// twice, nothing half-written), and its keyframes as near the truth as inline.
+TEST(LoopClosureWorker, SlamProcessorInTheBackgroundKeepsItsMapTheRedrawOfItsKeyframes) {
+  const testing::SyntheticWorld world = ring();
+  const std::vector<Pose2D> truth = tour();
+  const testing::LaserConfig laser = ringLaser();
+  const MapperOptions options = ringMapperOptions();
   for (const LoopClosureThreading threading : {LoopClosureThreading::kInline, LoopClosureThreading::kBackground}) {
     std::mt19937 rng(11);
     SlamProcessor slam(options, threading);
@@ -334,13 +340,7 @@ TEST(LoopClosureWorker, InlineReadingTheMapChangesNothing) {
   const testing::SyntheticWorld world = ring();
   const std::vector<Pose2D> truth = tour();
   const testing::LaserConfig laser = ringLaser();
-  MapperOptions options;
-  options.map_resolution = 0.05;
-  options.map_size = 512;
-  options.search_window_linear = 1.0;
-  options.search_window_angular = 1.7;
-  options.loop_closure = true;
-  options.map_update_distance_thresh = 0.3;
+  const MapperOptions options = ringMapperOptions();
   std::vector<Pose2D> keyframes[2];
   Pose2D last_pose[2];
   for (const bool read : {false, true}) {
