@@ -40,7 +40,8 @@ bool growExtent(const PlacedScan& placed, Eigen::Vector2d* lowest, Eigen::Vector
 // [lowest, highest] needs, with room for the blur.
 void cellRange(const Eigen::Vector2d& lattice_point, const Eigen::Vector2d& lowest, const Eigen::Vector2d& highest,
                Eigen::Vector2i* first, Eigen::Vector2i* last) {
-  const Eigen::Vector2d low = (lowest - Eigen::Vector2d::Constant(kMargin) - lattice_point) / LikelihoodField::kResolution;
+  const Eigen::Vector2d low =
+      (lowest - Eigen::Vector2d::Constant(kMargin) - lattice_point) / LikelihoodField::kResolution;
   const Eigen::Vector2d high =
       (highest + Eigen::Vector2d::Constant(kMargin) - lattice_point) / LikelihoodField::kResolution;
   *first = Eigen::Vector2i(floorToInt(low.x()), floorToInt(low.y()));
@@ -158,7 +159,8 @@ void LikelihoodField::addHits(const PlacedScan& placed) {
     for (int y = std::max(cy - radius, 0); y <= std::min(cy + radius, size_y_ - 1); ++y) {
       float* row = &cells[static_cast<std::size_t>(y) * size_x_];
       const double along = along_y[y - cy + radius];
-      for (int x = x_first; x <= x_last; ++x) row[x] = withHit(row[x], static_cast<float>(along_x[x - cx + radius] * along));
+      for (int x = x_first; x <= x_last; ++x)
+        row[x] = withHit(row[x], static_cast<float>(along_x[x - cx + radius] * along));
     }
   });
 }

@@ -168,7 +168,8 @@ void SlamProcessor::adopt(LoopClosureUpdate update) {
     keyframe_poses_[i] = i < optimised ? update.poses[i] : moved(keyframe_poses_[i]);
   // Redrawn by the worker up to the last optimised keyframe: the later ones on top, in order.
   map_ = std::move(*update.map);
-  for (std::size_t i = optimised; i < keyframe_poses_.size(); ++i) map_.updateByScan(keyframe_scans_[i], keyframe_poses_[i]);
+  for (std::size_t i = optimised; i < keyframe_poses_.size(); ++i)
+    map_.updateByScan(keyframe_scans_[i], keyframe_poses_[i]);
   window_.clear();
   unmapped_scan_.reset();
   const std::size_t keyframes = keyframe_poses_.size();

@@ -97,7 +97,8 @@ TEST(CorrelativeSearch, FewerLevelsTheSameAnswer) {
   LikelihoodField full(recent), few;
   few.build(recent, 2);
   const Pose2D centre{1.4, -0.1, 0.3 + 20 * kDegree};
-  const SearchResult a = correlativeSearch(full, scan, centre, window), b = correlativeSearch(few, scan, centre, window);
+  const SearchResult a = correlativeSearch(full, scan, centre, window);
+  const SearchResult b = correlativeSearch(few, scan, centre, window);
   EXPECT_EQ(a.pose.x, b.pose.x);
   EXPECT_EQ(a.pose.y, b.pose.y);
   EXPECT_EQ(a.pose.theta, b.pose.theta);

@@ -78,7 +78,8 @@ class LikelihoodField {
                                                          : 0.0f;
   }
   // The largest value over cells [x, x + 2^level) x [y, y + 2^level), cells outside counting as 0; level 0 is
-  // value(). For level < levels(). A block reaching over the grid's low edge may get more than its largest value: still a bound.
+  // value(). For level < levels(). A block reaching over the grid's low edge may get more than its largest value:
+  // still a bound.
   float blockMax(int level, int x, int y) const {
     const int size = 1 << level;
     if (x + size <= 0 || y + size <= 0 || x >= size_x_ || y >= size_y_ || size_x_ == 0) return 0.0f;
