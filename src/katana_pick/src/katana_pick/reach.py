@@ -1,7 +1,7 @@
 """Where the arm can take a can and where it can set one on a tower, computed from the arm's
 dimensions and joint limits (arm_geometry: read from the URDF), over every grasp the gripper can
-hold a can by: the tool frame's height up the can, the gripper's pitch, and whichever IK branch
-(elbow up or down, shoulder flipped or not) reaches each pose.
+hold a can by: the tool frame's height up the can, the gripper's pitch (the planner's pitches),
+and whichever IK branch (elbow up or down, shoulder flipped or not) reaches each pose.
 
 The tutorial's method fixes what taking and placing need (stacking.can_steps): to take a can
 standing at range r, the tool comes in along the line from the base from r - approach_distance
@@ -20,7 +20,7 @@ from typing import Dict, List, Sequence, Tuple
 
 from katana_pick import katana_ik
 from katana_pick.arm_geometry import KatanaGeometry
-from katana_pick.stacking import StackingOptions
+from katana_pick.stacking import StackingOptions, pitches
 
 
 @dataclass(frozen=True)
@@ -36,17 +36,15 @@ class ReachOptions:
     min_height: float = 0.04
     max_height: float = 0.10
     height_step: float = 0.01
-    pitch_step: float = 0.05
     step: float = 0.01      # m between checked points of a straight move (the planner's)
 
 
 def grasps(stacking: StackingOptions = StackingOptions(), options: ReachOptions = ReachOptions()) -> List[Grasp]:
     """Every grasp considered: the heights and pitches of the gripper's whole range."""
     n_h = int(round((options.max_height - options.min_height) / options.height_step))
-    n_p = int(round((stacking.max_pitch - stacking.min_pitch) / options.pitch_step))
-    return [Grasp(round(options.min_height + i * options.height_step, 6),
-                  round(stacking.min_pitch + k * options.pitch_step, 6))
-            for i in range(n_h + 1) for k in range(n_p + 1)]
+    # The planner's pitches (stacking.pitches), so that what the map allows the planner tries.
+    return [Grasp(round(options.min_height + i * options.height_step, 6), round(p, 6))
+            for i in range(n_h + 1) for p in sorted(pitches(stacking))]
 
 
 def pose_reachable(geometry: KatanaGeometry, r: float, z: float, pitch: float) -> bool:

@@ -3,7 +3,8 @@ for each can the gripper's moves through the tutorial's via points.
 
 The tutorial's recipe, made concrete: approach a can along the line from the arm's base to it,
 from a point approach_distance short of it; close the gripper; lift it off, carry it above the
-tower's top, lower it onto the tower; open; back away along the line to the base and rise. The
+tower's top, lower it onto the tower; open; back away along the line to the base and rise (ours,
+where the arm reaches). The
 moves near the cans are straight lines (cylindrical interpolation about the base's axis: radial
 and vertical moves stay on their line); the moves through the air interpolate the joints, which
 keeps them within the joint limits where a straight line near the base would not. The IK
@@ -77,6 +78,9 @@ class Move:
     poses: Tuple[ToolPose, ...]
     line: bool = True
     holding: bool = False
+    # A straight move that goes as far along its line as the arm reaches, and not at all if it
+    # reaches nothing of it (the rise after backing away: near the base the elbow's limit may stop it).
+    as_far_as_reachable: bool = False
 
 
 @dataclass(frozen=True)
@@ -156,7 +160,9 @@ def can_steps(can: Tuple[float, float], tower: Tuple[float, float], level: int, 
         Move('lower onto the tower', (place,), holding=True),
         Grip('let go', o.open_position, hold=False),
         Move('back away towards the base', (away,)),
-        Move('rise', (ToolPose(away.x, away.y, place_z + 2 * o.lift, pitch),)),
+        # Not the tutorial's (it backs away, then goes on to the next can): the open fingers higher
+        # above the tower before the move through the air, where the arm reaches.
+        Move('rise', (ToolPose(away.x, away.y, place_z + 2 * o.lift, pitch),), as_far_as_reachable=True),
     ]
 
 
@@ -174,15 +180,16 @@ def heights_down(high: float, low: float, step: float) -> List[float]:
 
 
 def pitches(options: StackingOptions) -> List[float]:
-    """The pitches to try, level first, then alternately steeper and shallower."""
-    n_down = int(round(-options.min_pitch / options.pitch_step))
-    n_up = int(round(options.max_pitch / options.pitch_step))
+    """The pitches to try, level first, then alternately steeper and shallower, pitch_step apart
+    and never past min_pitch or max_pitch (the last step to a limit may be shorter)."""
+    n_down = int(math.ceil(-options.min_pitch / options.pitch_step - 1e-9))
+    n_up = int(math.ceil(options.max_pitch / options.pitch_step - 1e-9))
     found = [0.0]
     for k in range(1, max(n_down, n_up) + 1):
         if k <= n_down:
-            found.append(-k * options.pitch_step)
+            found.append(max(-k * options.pitch_step, options.min_pitch))
         if k <= n_up:
-            found.append(k * options.pitch_step)
+            found.append(min(k * options.pitch_step, options.max_pitch))
     return found
 
 

@@ -8,8 +8,8 @@ the fastest joint at joint_speed. The last point is repeated `settle` seconds la
 controller only has P and D terms and must be within 0.02 rad of the goal 0.6 s after the end.
 """
 import math
-from dataclasses import dataclass
-from typing import List, Sequence, Tuple
+from dataclasses import dataclass, replace
+from typing import List, Optional, Sequence, Tuple
 
 from katana_pick import katana_ik
 from katana_pick.arm_geometry import KatanaGeometry
@@ -46,25 +46,31 @@ def tool_pose(geometry: KatanaGeometry, q: Sequence[float]) -> ToolPose:
 def joint_path(geometry: KatanaGeometry, q_start: Sequence[float], move: Move, roll: float = 0.0,
                timing: TimingOptions = TimingOptions()) -> JointPath:
     """The move from the arm's joints q_start, as timed via points; PlanError if a point is out
-    of reach or out of the joint limits."""
+    of reach or out of the joint limits (a move as_far_as_reachable stops at the last point before it)."""
     pose = tool_pose(geometry, q_start)
     q_prev = tuple(q_start)
     side = katana_ik.is_flipped(geometry, q_start) if move.holding else None
     times, positions, t = [], [], 0.0
+    stopped = False
     for target in move.poses:
         # A free move goes to each pose in one joint-space segment: the controller interpolates.
         for p in interpolate(pose, target, timing.step) if move.line else (target,):
             try:
                 q = katana_ik.solve(geometry, p.x, p.y, p.z, p.pitch, seed=q_prev, roll=roll, flipped=side)
             except katana_ik.IkError as e:
-                raise PlanError('%s: %s' % (move.what, e)) from None
+                if not (move.as_far_as_reachable and move.line):
+                    raise PlanError('%s: %s' % (move.what, e)) from None
+                stopped = True
+                break
             travel = math.sqrt((p.x - pose.x) ** 2 + (p.y - pose.y) ** 2 + (p.z - pose.z) ** 2)
             turn = max(abs(a - b) for a, b in zip(q, q_prev))
             t += max(travel / timing.tool_speed, turn / timing.joint_speed, timing.min_interval)
             times.append(t)
             positions.append(q)
             pose, q_prev = p, q
-    if not positions:
+        if stopped:
+            break
+    if not positions:  # nothing to move (a move as_far_as_reachable that reaches none of its line)
         positions.append(tuple(q_start))
         times.append(timing.min_interval)
         t = timing.min_interval
@@ -96,7 +102,7 @@ def plan_can(geometry: KatanaGeometry, q_start: Sequence[float], can, tower, lev
     for which some pitch makes every move reachable, at the middle one of those pitches (the most
     room to the joint limits). Where that finds nothing (far or high places, near cans), over the
     arm's whole reach: every grasp height from options.min_grasp_height, the approach and the
-    carry as high as the arm reaches, each of those moves through the air checked (clearance.py)
+    carry as high as the arm reaches. In both, the moves through the air are checked (clearance.py)
     against the tower and the cans in `standing`, those on the table besides this one and the
     tower's."""
     obstacles = tower_and_cans(tower, level, standing, options.can_height, options.can_radius)
@@ -111,8 +117,9 @@ def plan_can(geometry: KatanaGeometry, q_start: Sequence[float], can, tower, lev
                                                     options, roll, timing))
                     else:
                         steps = can_steps(can, tower, level, height, pitch, options)
-                        feasible.append((steps, plan_moves(geometry, q_start, [s for s in steps if isinstance(s, Move)],
-                                                           roll, timing)))
+                        paths = plan_moves(geometry, q_start, [s for s in steps if isinstance(s, Move)], roll, timing)
+                        _check_clear(geometry, q_start, steps, paths, height, obstacles, options)
+                        feasible.append((steps, paths))
                 except PlanError as e:
                     if why_not is None or pitch == 0.0 and height == options.grasp_heights[0] and not whole_reach:
                         why_not = 'grasped %.2f m up with the gripper level: %s' % (height, e)
@@ -124,13 +131,17 @@ def plan_can(geometry: KatanaGeometry, q_start: Sequence[float], can, tower, lev
 
 def plan_can_from_here(geometry: KatanaGeometry, q_now: Sequence[float], can, tower, level: int,
                        options: StackingOptions = StackingOptions(), timing: TimingOptions = TimingOptions(),
-                       standing: Sequence[Tuple[float, float]] = ()) -> Tuple[List[Step], List[JointPath]]:
+                       standing: Sequence[Tuple[float, float]] = (),
+                       home: Optional[Sequence[float]] = None) -> Tuple[List[Step], List[JointPath]]:
     """plan_can from the arm's joints q_now or, where that finds nothing, after a first straight
     move that takes the tool farther from what it last let go of: up by retreat_distance, back
-    along the line to the base by approach_distance, or both. After a can the open fingers are
-    just behind the tower and little above its top, and the way from there to the next can may
-    pass too close to it, while from higher or farther back it does not (tower_choice scores
-    plans from where the arm started). PlanError with plan_can's reason from q_now otherwise."""
+    along the line to the base by approach_distance, or both; last, back to the joints `home`
+    (where the arm started: back_off's way, its open fingers clear of the tower and the cans).
+    After a can the open fingers are just behind the tower and little above its top, and the way
+    from there to the next can may pass too close to it, while from higher or farther back it
+    does not. Near the base none of the straight moves may be in reach (a can set on the table:
+    the elbow's limit), and tower_choice scored every plan from where the arm started.
+    PlanError with plan_can's reason from q_now otherwise."""
     try:
         return plan_can(geometry, q_now, can, tower, level, options, timing=timing, standing=standing)
     except PlanError as from_here:
@@ -138,10 +149,27 @@ def plan_can_from_here(geometry: KatanaGeometry, q_now: Sequence[float], can, to
     here = tool_pose(geometry, q_now)
     back = max(0.0, here.radius - options.approach_distance) / max(here.radius, 1e-9)
     up = here.z + options.retreat_distance
-    for what, via in (('up, clear of the tower', ToolPose(here.x, here.y, up, here.pitch)),
-                      ('back, clear of the tower', ToolPose(here.x * back, here.y * back, here.z, here.pitch)),
-                      ('back and up, clear of the tower', ToolPose(here.x * back, here.y * back, up, here.pitch))):
-        move = Move(what, (via,))
+    escapes = [Move('up, clear of the tower', (ToolPose(here.x, here.y, up, here.pitch),)),
+               Move('back, clear of the tower', (ToolPose(here.x * back, here.y * back, here.z, here.pitch),)),
+               Move('back and up, clear of the tower', (ToolPose(here.x * back, here.y * back, up, here.pitch),))]
+    # The fingers hold nothing, so their pitch is free (min_pitch is for a held can's rim, down
+    # to pointing straight down here): near the base, where the elbow's limit keeps the tool from
+    # rising at the pitch the can was let go at, turned in place to the nearest pitch at which it
+    # reaches the top, then up (joint-space moves, checked for clearance).
+    obstacles = tower_and_cans(tower, level, standing, options.can_height, options.can_radius)
+    fingers = Held(options.fingers_drop, options.fingers_radius)
+    empty = pitches(replace(options, min_pitch=-math.pi / 2))
+    for pitch in sorted(empty, key=lambda p: abs(p - here.pitch))[1:]:
+        turning = Move('the gripper turned to %.2f rad and up, clear of the tower' % pitch,
+                       (ToolPose(here.x, here.y, here.z, pitch), ToolPose(here.x, here.y, up, pitch)), line=False)
+        try:
+            path = joint_path(geometry, q_now, turning, timing=timing)
+        except PlanError:
+            continue
+        if path_conflict(geometry, (tuple(q_now),) + path.positions, fingers, obstacles) is None:
+            escapes.append(turning)
+            break
+    for move in escapes:
         try:
             first = joint_path(geometry, q_now, move, timing=timing)
             steps, paths = plan_can(geometry, first.positions[-1], can, tower, level, options, timing=timing,
@@ -149,7 +177,35 @@ def plan_can_from_here(geometry: KatanaGeometry, q_now: Sequence[float], can, to
         except PlanError:
             continue
         return [move] + steps, [first] + paths
+    if home is None:
+        raise failure
+    # Back to where the arm started, from here or from the top of the last escape.
+    for move in [None] + escapes[3:]:
+        before = [] if move is None else [(move, joint_path(geometry, q_now, move, timing=timing))]
+        q = before[-1][1].positions[-1] if before else tuple(q_now)
+        home_path = back_off(geometry, q, home, options, timing=timing)
+        if path_conflict(geometry, (q,) + home_path.positions, fingers, obstacles) is not None:
+            continue
+        try:
+            steps, paths = plan_can(geometry, home, can, tower, level, options, timing=timing, standing=standing)
+        except PlanError:
+            break  # the same from wherever the arm comes home from
+        home_move = Move('back to where the arm started', (home_path.end,), line=False)
+        return [m for m, _ in before] + [home_move] + steps, [p for _, p in before] + [home_path] + paths
     raise failure
+
+
+def _check_clear(geometry, q_start, steps, paths, height, obstacles, options):
+    """PlanError unless the moves through the air of can_steps' plan clear the obstacles: the
+    approach with the fingers open, the carry with the can held (clearance.py). High over
+    everything as they go, the joint-space path may still bulge: from just behind the tower, the
+    fingers may sweep over it before they rise."""
+    moves = [s for s in steps if isinstance(s, Move)]
+    for index, held in ((0, Held(options.fingers_drop, options.fingers_radius)), (3, Held(height, options.can_radius))):
+        start = tuple(q_start) if index == 0 else paths[index - 1].positions[-1]
+        conflict = path_conflict(geometry, (start,) + paths[index].positions, held, obstacles)
+        if conflict is not None:
+            raise PlanError('%s: %s' % (moves[index].what, conflict))
 
 
 def _plan_lower(geometry, q_start, can, tower, level, height, pitch, obstacles, options, roll, timing):
