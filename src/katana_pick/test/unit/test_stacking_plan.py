@@ -69,12 +69,16 @@ def test_interpolation_keeps_radial_and_vertical_moves_on_their_lines():
     assert 0.4 * math.pi / 2 / 0.01 <= len(arc) <= 0.4 * math.pi / 2 / 0.01 + 1
 
 
-def test_pitches_start_level_and_span_the_options():
+def test_pitches_start_level_and_span_the_options_never_past_them():
     found = pitches(O)
     assert found[0] == 0.0
-    assert min(found) == pytest.approx(O.min_pitch, abs=O.pitch_step)
+    # The steepest is min_pitch itself (-0.84: the finger hinges clear a held can's rim), not the
+    # grid's -0.85 past it.
+    assert min(found) == pytest.approx(O.min_pitch, abs=1e-9)
     assert max(found) == pytest.approx(O.max_pitch, abs=1e-9)
     assert len(found) == len(set(round(p, 9) for p in found))
+    steps = sorted(b - a for a, b in zip(sorted(found), sorted(found)[1:]))
+    assert steps[0] > 0 and steps[-1] == pytest.approx(O.pitch_step)
 
 
 def test_a_plan_puts_the_tool_on_every_via_point_within_the_limits():

@@ -5,16 +5,18 @@ import math
 import os
 import sys
 
+import pytest
+
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'src'))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', '..', 'katana_arm_gazebo', 'src'))
 from katana_arm_gazebo.can_layouts import LayoutRules, random_layout  # noqa: E402
 from katana_pick import katana_ik, reach  # noqa: E402
 from katana_pick.arm_geometry import KatanaGeometry, within_limits  # noqa: E402
-from katana_pick.clearance import Held, Obstacle, path_conflict  # noqa: E402
+from katana_pick.clearance import Held, Obstacle, path_conflict, tower_and_cans  # noqa: E402
 from katana_pick.stacking import Move, StackingOptions, choose_tower, pick_order  # noqa: E402
 from katana_pick.free_spots import BESIDE, free_spots  # noqa: E402
 from katana_pick.tower_choice import choose_stack, fits_by_plan, in_tower, placed  # noqa: E402
-from katana_pick.trajectories import PlanError, plan_can  # noqa: E402
+from katana_pick.trajectories import PlanError, plan_can, plan_can_from_here, tool_pose  # noqa: E402
 
 G = KatanaGeometry()
 O = StackingOptions()
@@ -158,3 +160,58 @@ def test_no_free_spot_is_offered_where_a_cans_own_spot_is_as_good():
     cans = random_layout(3, 1)  # the old band: three high on the middle can
     assert free_spots(cans, G) == []
     assert free_spots(cans[:1], G) == []
+
+
+def _free_moves_clear(q_start, steps, paths, tower, level, standing):
+    """Every move through the air of a planned can (its paths from q_start) clears the tower and
+    the cans standing, by clearance.py: the held can while holding, else the open fingers."""
+    obstacles = tower_and_cans(tower, level, standing, O.can_height, O.can_radius)
+    q = tuple(q_start)
+    moves = [s for s in steps if isinstance(s, Move)]
+    grasp_height = next(m.poses[-1].z for m in moves if m.what == 'in along the line from the base')
+    for move, path in zip(moves, paths):
+        if not move.line:
+            held = Held(grasp_height, O.can_radius) if move.holding else Held(O.fingers_drop, O.fingers_radius)
+            assert path_conflict(G, (q,) + path.positions, held, obstacles) is None, move.what
+        q = path.positions[-1]
+
+
+def test_a_can_set_on_the_table_near_the_base_rises_as_far_as_it_can_and_the_next_still_goes_on():
+    """Seed 20 of four cans over the reach: the tower goes up on a free spot 0.35 m out, and the
+    first can, set on the table there, leaves the tool 0.25 m from the base and 0.045 m up, where
+    the elbow's limit stops it rising at the can's pitch. The rise goes no higher than it reaches,
+    the next can is planned after turning the empty gripper and rising (its moves clear of the
+    tower), and all four go on, as the reach map and choose_stack say."""
+    cans = [(0.4027, 0.1971), (0.2367, 0.3596), (0.2795, -0.2924), (0.4504, -0.056)]
+    spot = (0.3496, 0.0585)
+    first = cans[1]
+    standing = [c for c in cans if c != first]
+    steps, paths = plan_can(G, START, first, spot, 0, O, standing=standing)
+    moves = [s for s in steps if isinstance(s, Move)]
+    assert moves[-1].what == 'rise' and moves[-1].as_far_as_reachable
+    place_z = tool_pose(G, paths[-3].positions[-1]).z  # where it let go, after lowering
+    assert place_z == pytest.approx(moves[-3].poses[-1].z, abs=1e-6)
+    risen = tool_pose(G, paths[-1].positions[-1]).z
+    assert place_z - 1e-6 <= risen < place_z + 2 * O.lift - 0.005  # short of the full rise
+    q = paths[-1].positions[-1]
+    level, on = 1, [first]
+    for can in (cans[0], cans[3], cans[2]):
+        left = [c for c in cans if c not in on and c != can]
+        steps, paths = plan_can_from_here(G, q, can, spot, level, O, standing=left, home=START)
+        _free_moves_clear(q, steps, paths, spot, level, left)
+        q = paths[-1].positions[-1]
+        level, on = level + 1, on + [can]
+    assert level == 4
+
+
+def test_the_tutorial_searchs_moves_through_the_air_clear_the_tower_and_the_cans():
+    for seed in (2, 5, 8):
+        cans = random_layout(3, seed)
+        tower = cans[choose_tower(cans)]
+        order = pick_order(cans, choose_tower(cans))
+        q, level, on = START, 1, []
+        for i in order:
+            left = [c for k, c in enumerate(cans) if cans[k] != tower and k != i and k not in on]
+            steps, paths = plan_can_from_here(G, q, cans[i], tower, level, O, standing=left, home=START)
+            _free_moves_clear(q, steps, paths, tower, level, left)
+            q, level, on = paths[-1].positions[-1], level + 1, on + [i]
