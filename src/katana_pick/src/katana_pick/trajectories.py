@@ -133,14 +133,15 @@ def plan_can_from_here(geometry: KatanaGeometry, q_now: Sequence[float], can, to
                        options: StackingOptions = StackingOptions(), timing: TimingOptions = TimingOptions(),
                        standing: Sequence[Tuple[float, float]] = (),
                        home: Optional[Sequence[float]] = None) -> Tuple[List[Step], List[JointPath]]:
-    """plan_can from the arm's joints q_now or, where that finds nothing, after a first straight
-    move that takes the tool farther from what it last let go of: up by retreat_distance, back
-    along the line to the base by approach_distance, or both; last, back to the joints `home`
-    (where the arm started: back_off's way, its open fingers clear of the tower and the cans).
-    After a can the open fingers are just behind the tower and little above its top, and the way
-    from there to the next can may pass too close to it, while from higher or farther back it
-    does not. Near the base none of the straight moves may be in reach (a can set on the table:
-    the elbow's limit), and tower_choice scored every plan from where the arm started.
+    """plan_can from the arm's joints q_now or, where that finds nothing, after a first move that
+    takes the tool farther from what it last let go of: up by retreat_distance, back along the
+    line to the base by approach_distance, or both; the empty gripper turned to a pitch at which
+    it rises, and up; last, back to the joints `home` (where the arm started, by back_off's way),
+    from here or from that rise. After a can the open fingers are just behind the tower and little
+    above its top, and the way from there to the next can may pass too close to it, while from
+    higher or farther back it does not. Near the base the straight moves may be out of reach (a
+    can set on the table: the elbow's limit), and tower_choice scored every plan from where the
+    arm started. The turn and the way home keep the open fingers clear of the tower and the cans.
     PlanError with plan_can's reason from q_now otherwise."""
     try:
         return plan_can(geometry, q_now, can, tower, level, options, timing=timing, standing=standing)
@@ -149,27 +150,13 @@ def plan_can_from_here(geometry: KatanaGeometry, q_now: Sequence[float], can, to
     here = tool_pose(geometry, q_now)
     back = max(0.0, here.radius - options.approach_distance) / max(here.radius, 1e-9)
     up = here.z + options.retreat_distance
+    obstacles = tower_and_cans(tower, level, standing, options.can_height, options.can_radius)
+    fingers = Held(options.fingers_drop, options.fingers_radius)
+    turned = _turned_and_up(geometry, q_now, up, fingers, obstacles, options, timing)
     escapes = [Move('up, clear of the tower', (ToolPose(here.x, here.y, up, here.pitch),)),
                Move('back, clear of the tower', (ToolPose(here.x * back, here.y * back, here.z, here.pitch),)),
                Move('back and up, clear of the tower', (ToolPose(here.x * back, here.y * back, up, here.pitch),))]
-    # The fingers hold nothing, so their pitch is free (min_pitch is for a held can's rim, down
-    # to pointing straight down here): near the base, where the elbow's limit keeps the tool from
-    # rising at the pitch the can was let go at, turned in place to the nearest pitch at which it
-    # reaches the top, then up (joint-space moves, checked for clearance).
-    obstacles = tower_and_cans(tower, level, standing, options.can_height, options.can_radius)
-    fingers = Held(options.fingers_drop, options.fingers_radius)
-    empty = pitches(replace(options, min_pitch=-math.pi / 2))
-    for pitch in sorted(empty, key=lambda p: abs(p - here.pitch))[1:]:
-        turning = Move('the gripper turned to %.2f rad and up, clear of the tower' % pitch,
-                       (ToolPose(here.x, here.y, here.z, pitch), ToolPose(here.x, here.y, up, pitch)), line=False)
-        try:
-            path = joint_path(geometry, q_now, turning, timing=timing)
-        except PlanError:
-            continue
-        if path_conflict(geometry, (tuple(q_now),) + path.positions, fingers, obstacles) is None:
-            escapes.append(turning)
-            break
-    for move in escapes:
+    for move in escapes + ([turned] if turned is not None else []):
         try:
             first = joint_path(geometry, q_now, move, timing=timing)
             steps, paths = plan_can(geometry, first.positions[-1], can, tower, level, options, timing=timing,
@@ -179,8 +166,8 @@ def plan_can_from_here(geometry: KatanaGeometry, q_now: Sequence[float], can, to
         return [move] + steps, [first] + paths
     if home is None:
         raise failure
-    # Back to where the arm started, from here or from the top of the last escape.
-    for move in [None] + escapes[3:]:
+    # Back to where the arm started, from here or from the top of the turned rise.
+    for move in (None, turned) if turned is not None else (None,):
         before = [] if move is None else [(move, joint_path(geometry, q_now, move, timing=timing))]
         q = before[-1][1].positions[-1] if before else tuple(q_now)
         home_path = back_off(geometry, q, home, options, timing=timing)
@@ -193,6 +180,26 @@ def plan_can_from_here(geometry: KatanaGeometry, q_now: Sequence[float], can, to
         home_move = Move('back to where the arm started', (home_path.end,), line=False)
         return [m for m, _ in before] + [home_move] + steps, [p for _, p in before] + [home_path] + paths
     raise failure
+
+
+def _turned_and_up(geometry, q_now, up, fingers, obstacles, options, timing):
+    """The empty gripper turned in place to the nearest pitch at which the tool rises to height
+    `up`, then up (one joint-space segment each), its fingers clear of the obstacles; None if no
+    pitch does. Holding nothing, the pitch is free (min_pitch is for a held can's rim), down to
+    pointing straight down: near the base the elbow's limit keeps the tool from rising at the
+    pitch the can was let go at."""
+    here = tool_pose(geometry, q_now)
+    empty = pitches(replace(options, min_pitch=-math.pi / 2))
+    for pitch in sorted(empty, key=lambda p: abs(p - here.pitch))[1:]:
+        move = Move('the gripper turned to %.2f rad and up, clear of the tower' % pitch,
+                    (ToolPose(here.x, here.y, here.z, pitch), ToolPose(here.x, here.y, up, pitch)), line=False)
+        try:
+            path = joint_path(geometry, q_now, move, timing=timing)
+        except PlanError:
+            continue
+        if path_conflict(geometry, (tuple(q_now),) + path.positions, fingers, obstacles) is None:
+            return move
+    return None
 
 
 def _check_clear(geometry, q_start, steps, paths, height, obstacles, options):
