@@ -60,9 +60,8 @@ def layout_rules(region):
     if region == 'band':
         return LayoutRules()
     from katana_pick.arm_geometry import KatanaGeometry
-    from katana_pick.reach import reach_map
-    radii = [round(0.25 + 0.005 * i, 3) for i in range(51)]  # 0.25-0.50 m: past both ends of the reach
-    near, far = reach_map(KatanaGeometry(), radii, max_level=0).take_range()
+    from katana_pick.reach import taking_range
+    near, far = taking_range(KatanaGeometry())
     return LayoutRules(min_range=near, max_range=far)
 
 

@@ -18,7 +18,7 @@ import math
 from dataclasses import dataclass
 from typing import Dict, List, Sequence, Tuple
 
-from katana_pick import katana_ik
+from katana_pick import arm_geometry, katana_ik
 from katana_pick.arm_geometry import KatanaGeometry
 from katana_pick.stacking import StackingOptions, pitches
 
@@ -113,3 +113,11 @@ def reach_map(geometry: KatanaGeometry, radii: Sequence[float], max_level: int =
     place = {(r, level): tuple(g for g in all_grasps if can_place(geometry, r, level, g, stacking, options))
              for r in radii for level in range(0, max_level + 1)}
     return ReachMap(radii, take, place, max_level)
+
+
+def taking_range(geometry: KatanaGeometry, stacking: StackingOptions = StackingOptions(),
+                 step: float = 0.005) -> Tuple[float, float]:
+    """The nearest and farthest ranges, on a `step` grid, at which some grasp takes a can: from
+    the base's axis out past the arm stretched out (arm_geometry.reach)."""
+    radii = [round(k * step, 6) for k in range(1, int(arm_geometry.reach(geometry) / step) + 2)]
+    return reach_map(geometry, radii, max_level=0, stacking=stacking).take_range()

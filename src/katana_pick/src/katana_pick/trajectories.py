@@ -152,18 +152,28 @@ def plan_can_from_here(geometry: KatanaGeometry, q_now: Sequence[float], can, to
     up = here.z + options.retreat_distance
     obstacles = tower_and_cans(tower, level, standing, options.can_height, options.can_radius)
     fingers = Held(options.fingers_drop, options.fingers_radius)
-    turned = _turned_and_up(geometry, q_now, up, fingers, obstacles, options, timing)
-    escapes = [Move('up, clear of the tower', (ToolPose(here.x, here.y, up, here.pitch),)),
-               Move('back, clear of the tower', (ToolPose(here.x * back, here.y * back, here.z, here.pitch),)),
-               Move('back and up, clear of the tower', (ToolPose(here.x * back, here.y * back, up, here.pitch),))]
-    for move in escapes + ([turned] if turned is not None else []):
+    straight = [Move('up, clear of the tower', (ToolPose(here.x, here.y, up, here.pitch),)),
+                Move('back, clear of the tower', (ToolPose(here.x * back, here.y * back, here.z, here.pitch),)),
+                Move('back and up, clear of the tower', (ToolPose(here.x * back, here.y * back, up, here.pitch),))]
+
+    def after(move):
+        """plan_can after `move` from q_now, with it; None if either cannot be made."""
         try:
             first = joint_path(geometry, q_now, move, timing=timing)
             steps, paths = plan_can(geometry, first.positions[-1], can, tower, level, options, timing=timing,
                                     standing=standing)
         except PlanError:
-            continue
+            return None
         return [move] + steps, [first] + paths
+    for move in straight:
+        planned = after(move)
+        if planned is not None:
+            return planned
+    # The turn is searched for only where no straight move did.
+    turned = _turned_and_up(geometry, q_now, up, fingers, obstacles, options, timing)
+    planned = after(turned) if turned is not None else None
+    if planned is not None:
+        return planned
     if home is None:
         raise failure
     # Back to where the arm started, from here or from the top of the turned rise.

@@ -11,7 +11,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..'
 from katana_pick import katana_ik  # noqa: E402
 from katana_pick.arm_geometry import KatanaGeometry, within_limits  # noqa: E402
 from katana_pick.nudging import NudgeOptions, nudge_target, plan_nudge  # noqa: E402
-from katana_pick.reach import can_take, grasps, reach_map  # noqa: E402
+from katana_pick.reach import can_take, grasps, taking_range  # noqa: E402
 from katana_pick.stacking import Grip, Move, StackingOptions  # noqa: E402
 from katana_pick.trajectories import PlanError  # noqa: E402
 
@@ -19,7 +19,7 @@ G = KatanaGeometry()
 O = StackingOptions()
 N = NudgeOptions()
 START = (0.0, 0.0, 0.0, 0.0, 0.0)
-NEAR = reach_map(G, [0.2 + 0.005 * k for k in range(61)], max_level=0).take_range()[0]
+NEAR = taking_range(G)[0]
 
 
 def fingertips(q):
