@@ -30,19 +30,25 @@ def q_tuple(q):
 class Recorder:
     def __init__(self, topic, msg_type):
         self.messages = []
-        self.sub = rospy.Subscriber(topic, msg_type, lambda m: self.messages.append((rospy.Time.now(), m)))
+        self.wall_arrivals = []  # time.monotonic() at each message's arrival
+        self.sub = rospy.Subscriber(topic, msg_type, self._record)
+
+    def _record(self, m):
+        self.wall_arrivals.append(time.monotonic())
+        self.messages.append((rospy.Time.now(), m))
 
     def since(self, t):
         return [m for stamp, m in self.messages if stamp >= t]
 
-    def first_since(self, t, timeout):
-        """(arrival time, message) of the first message at or after t, waiting up to timeout s."""
+    def first_wall_since(self, t, timeout):
+        """(wall arrival, message) of the first message arriving at or after wall time t."""
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
-            arrived = [(stamp, m) for stamp, m in self.messages if stamp >= t]
-            if arrived:
-                return arrived[0]
-            time.sleep(0.001)
+            n = len(self.messages)
+            for i in range(n):
+                if self.wall_arrivals[i] >= t:
+                    return self.wall_arrivals[i], self.messages[i][1]
+            time.sleep(0.0005)
         return None, None
 
 
@@ -108,17 +114,27 @@ class PioneerBringupTest(unittest.TestCase):
         # As the report's controller, which works in the command's callback: the drive gets a command
         # when it comes, not at the controller's next 20 Hz tick, up to 50 ms later (with that delay
         # in the loop, move_base explored the Pioneer's maze half as fast and explore gave up goals).
+        # Nine commands at unrelated phases of the tick: a controller that waits for its tick is
+        # late by 25 ms at the median; one late delivery on a loaded machine is not that fault.
+        # Wall time, because sim time moves in /clock's 10 ms steps; the world runs at 1x.
         rospy.sleep(1.0)  # idle, past cmd_timeout
-        msg = Twist()
-        msg.linear.x = 0.2
-        sent = rospy.Time.now()
-        self.cmd_pub.publish(msg)
-        arrived, drive = self.drive_cmds.first_since(sent, timeout=5.0)
-        self.assertIsNotNone(drive, 'pioneer_pid_controller sent nothing on /pioneer/cmd_vel')
-        self.assertLess((arrived - sent).to_sec(), 0.01)  # a message's way there and back, not a tick
-        # The command, plus at most p (0.5) times the shortfall of the robot at rest.
-        self.assertGreaterEqual(drive.linear.x, 0.2)
-        self.assertLessEqual(drive.linear.x, 0.3 + 1e-9)
+        latencies = []
+        for i in range(9):
+            msg = Twist()
+            msg.linear.x = 0.2
+            sent = time.monotonic()
+            self.cmd_pub.publish(msg)
+            arrived, drive = self.drive_cmds.first_wall_since(sent, timeout=5.0)
+            self.assertIsNotNone(drive, 'pioneer_pid_controller sent nothing on /pioneer/cmd_vel')
+            latencies.append(round(arrived - sent, 4))
+            if i == 0:
+                # From rest: the command, plus at most p (0.5) times the shortfall of the robot at rest.
+                self.assertGreaterEqual(drive.linear.x, 0.2)
+                self.assertLessEqual(drive.linear.x, 0.3 + 1e-9)
+            rospy.sleep(0.1 + 0.013 * i)  # each command at another phase of the 50 ms tick
+        latencies.sort()
+        self.assertLess(latencies[4], 0.01, 'median of %s s' % latencies)  # a message's way there and back
+        self.assertLess(latencies[-1], 0.06, latencies)  # never later than one tick, with slack
         rospy.sleep(1.0)  # let it stop again
 
     def test_4_robot_drives_with_the_drive_plugin(self):
