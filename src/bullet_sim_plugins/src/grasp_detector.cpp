@@ -51,15 +51,23 @@ std::vector<GraspDetector::Event> GraspDetector::update(const std::vector<Touch>
   for (const std::string& object : seen) {
     State& s = objects_[object];
     const auto it = by_object.find(object);
-    const bool gripped = it != by_object.end() && opposing(it->second, options_.forces_angle_tolerance);
+    const bool untouched = it == by_object.end();
+    if (s.let_go) {
+      // Not counted until the fingers close anew: fingers that opened grip nothing.
+      s.widest = std::max(s.widest, spread);
+      if (s.widest - spread <= GraspFixOptions::kOpenedOffFraction * options_.release_tolerance) continue;
+      s.let_go = false;
+    }
+    const bool gripped = !untouched && opposing(it->second, options_.forces_angle_tolerance);
     s.count = gripped ? std::min(s.count + 1, options_.max_grip_count) : std::max(s.count - 1, 0);
     if (s.attached) {
       s.tightest = std::min(s.tightest, spread);
       const double opened = spread - s.tightest;
-      const bool untouched = it == by_object.end();
       if (opened > options_.release_tolerance ||
           (untouched && opened > GraspFixOptions::kOpenedOffFraction * options_.release_tolerance)) {
         s = State{};  // released: start again from nothing
+        s.let_go = true;
+        s.widest = spread;
         events.push_back({object, false});
       }
     } else if (s.count >= options_.grip_count_threshold) {
@@ -70,7 +78,7 @@ std::vector<GraspDetector::Event> GraspDetector::update(const std::vector<Touch>
   }
   // Objects neither touched nor held are forgotten, so the map stays small.
   for (auto it = objects_.begin(); it != objects_.end();)
-    it = (!it->second.attached && it->second.count == 0) ? objects_.erase(it) : std::next(it);
+    it = (!it->second.attached && !it->second.let_go && it->second.count == 0) ? objects_.erase(it) : std::next(it);
   return events;
 }
 

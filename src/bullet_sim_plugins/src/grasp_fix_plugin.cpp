@@ -69,8 +69,10 @@ class GraspFixPlugin : public ModelPlugin {
   }
 
   void reset() override {
-    for (Arm& arm : arms_)
+    for (Arm& arm : arms_) {
       while (!arm.held.empty()) release(arm, arm.held.begin()->first);
+      arm.detector = GraspDetector(options_);  // the world starts again: nothing counted
+    }
     next_check_ = 0.0;
   }
 
@@ -166,7 +168,6 @@ class GraspFixPlugin : public ModelPlugin {
     if (options_.disable_collisions_on_attach) setCollisions(arm, it->second, true);
     ROS_INFO_STREAM(label_ << ": arm '" << arm.name << "' lets go of '" << it->second.model << "'");
     publishEvent(arm, it->second.model, false);
-    arm.detector.forget(key);
     arm.held.erase(it);
   }
 

@@ -18,8 +18,13 @@
 // spread only 4.2 mm on opening to katana_driver's open 0.30 rad, under the tutorial's 5 mm, and
 // stayed in the open gripper. While held, the fingers press on the object; only an opening
 // leaves them off it.
-// A released object starts again from a count of 0, so it cannot flicker between attached and
-// released while the fingers are still near it.
+// A released object starts again from a count of 0, and is not counted at all until the gripper
+// closes again (its spread falls a fifth of release_tolerance below its widest since the
+// release). Upstream counts it at once, so open fingers that rest on it grip it again
+// (gazebo-pkgs issue 52: "still sticking for 1-2 seconds"): a steep Katana grasp leaves the can's
+// rim between the open fingers' roots, touching both at 0.1 N once the arm, rid of the can's
+// weight, springs back 1 cm, and the can set down was attached again after 1 s and dragged by the
+// back-away. Every new grasp closes the fingers, so none is lost.
 #include <Eigen/Core>
 
 #include <map>
@@ -35,7 +40,8 @@ struct GraspFixOptions {
   int max_grip_count = 10;
   double release_tolerance = 0.005;  // m
   // The part of release_tolerance the gripper must have opened by to let go of an object that no
-  // gripper link touches any more (the spread's jitter while holding is about 1e-6 m).
+  // gripper link touches any more, and closed by to grip again an object it let go of while still
+  // touching it (the spread's jitter is about 1e-6 m).
   static constexpr double kOpenedOffFraction = 0.2;
   bool disable_collisions_on_attach = false;
 };
@@ -72,6 +78,8 @@ class GraspDetector {
     int count = 0;
     bool attached = false;
     double tightest = 0.0;  // the smallest spread since the attach
+    bool let_go = false;    // released, and the gripper not closed since
+    double widest = 0.0;    // the largest spread since the release
   };
   GraspFixOptions options_;
   std::map<std::string, State> objects_;
