@@ -30,7 +30,7 @@ from bullet_sim_testing.gazebo import Gazebo
 from bullet_sim_testing.waiting import wait_until
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "browser"))
-from studio_browser import open_browser, open_studio, save_screenshot, studio_url, wait_for  # noqa: E402
+from studio_browser import click, open_browser, open_studio, save_screenshot, studio_url, wait_for  # noqa: E402
 
 MODEL, JOINT = "simple_model", "joint_1"
 INERTIA = 1.0 * (0.6 ** 2 + 0.05 ** 2) / 12 + 1.0 * 0.25 ** 2 + 0.0166667 + 0.001 * 0.5 ** 2
@@ -56,7 +56,7 @@ class StudioJoints(unittest.TestCase):
         # the world's model list (on a busy machine after the ground plane is drawn).
         wait_for(cls.driver, "return document.querySelector(\"#models-tree li[data-model='%s'] .label\")" % MODEL,
                  15.0, "simple_model in the Models tree")
-        cls.driver.find_element(By.CSS_SELECTOR, "#models-tree li[data-model='%s'] .label" % MODEL).click()
+        click(cls.driver, "#models-tree li[data-model='%s'] .label" % MODEL)
         wait_for(cls.driver, "return document.querySelector('#joints-force input[data-joint=\"%s\"]')" % JOINT, 10.0,
                  "the Joints panel lists joint_1")
 

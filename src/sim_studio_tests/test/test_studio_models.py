@@ -26,7 +26,7 @@ from bullet_sim_testing.gazebo import Gazebo
 from bullet_sim_testing.waiting import wait_until
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "browser"))
-from studio_browser import open_browser, open_studio, studio_url, wait_for  # noqa: E402
+from studio_browser import click, open_browser, open_studio, studio_url, wait_for  # noqa: E402
 
 
 class StudioModels(unittest.TestCase):
@@ -109,7 +109,7 @@ class StudioModels(unittest.TestCase):
         self.assertEqual(self.names(), before, "nothing spawned")
 
     def test_3_select_shows_the_pose_and_delete_removes(self):
-        self.css("#models-tree li[data-model='unit_box'] .label").click()
+        click(self.driver, "#models-tree li[data-model='unit_box'] .label")
         self.wait("window.studio.world.selected() === 'unit_box'", 5.0, "the World selects it too")
         self.wait("document.getElementById('models-position') && "
                   "document.getElementById('models-position').textContent.trim() !== ''", 5.0, "a pose shown")

@@ -31,7 +31,7 @@ from bullet_sim_testing.gazebo import Gazebo
 from bullet_sim_testing.waiting import wait_until
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "browser"))
-from studio_browser import open_browser, open_studio, save_screenshot, studio_url, wait_for  # noqa: E402
+from studio_browser import click, open_browser, open_studio, save_screenshot, studio_url, wait_for  # noqa: E402
 
 MODELS = {"ground_plane", "katana", "table", "can_1", "can_2", "can_3"}
 DRAWN = (Marker.CUBE, Marker.SPHERE, Marker.CYLINDER, Marker.MESH_RESOURCE)
@@ -156,7 +156,7 @@ class StudioWorld(unittest.TestCase):
                   "window.studio.world.linkPosition('can_1::can_link')[1] - %f) < 0.01" % goal, 5.0,
                   "the page draws the can where it was dragged")
         # The docs' picture: the arm selected in the tree, its joints in the Joints panel.
-        self.driver.find_element(By.CSS_SELECTOR, "#models-tree li[data-model='katana'] .label").click()
+        click(self.driver, "#models-tree li[data-model='katana'] .label")
         self.wait("document.querySelectorAll('#joints-force .joint-row').length > 0", 5.0, "the arm's joints")
         time.sleep(0.6)
         save_screenshot(self.driver, "world")

@@ -5,7 +5,9 @@ import time
 
 import rospy
 from selenium import webdriver
+from selenium.common.exceptions import StaleElementReferenceException
 from selenium.webdriver.chrome.options import Options
+from selenium.webdriver.common.by import By
 from selenium.webdriver.chrome.service import Service
 
 CHROMIUM = "/usr/bin/chromium"
@@ -56,6 +58,21 @@ def wait_for(driver, script, timeout=10.0, what=None):
             raise AssertionError("%s (waited %.0f s for: %s); browser log: %s"
                                  % (what or "timed out", timeout, script, browser_errors(driver)))
         time.sleep(0.05)
+
+
+def click(driver, css, timeout=5.0):
+    """Click the element `css` selects, found afresh if the page redrew it between the find and
+    the click (the Models tree is rebuilt when the world's model list comes in), as a user's
+    click lands on what is on the screen."""
+    deadline = time.monotonic() + timeout
+    while True:
+        try:
+            driver.find_element(By.CSS_SELECTOR, css).click()
+            return
+        except StaleElementReferenceException:
+            if time.monotonic() > deadline:
+                raise
+            time.sleep(0.05)
 
 
 def browser_errors(driver):
