@@ -1,11 +1,14 @@
 """What the stack_cans rostests share: the scene's sizes, a can's tilt, and one run of
 stack_cans.launch watched from outside (bring-up at the world's own pace, then as fast as it goes)."""
 import math
+import threading
 import time
 
 import rosnode
 import rospy
+from gazebo_grasp_plugin_ros.msg import GazeboGraspEvent
 from geometry_msgs.msg import PoseArray
+from rosgraph_msgs.msg import Log
 
 from bullet_sim_testing.gazebo import set_real_time_factor
 
@@ -38,3 +41,30 @@ def run_until_stack_cans_exits(timeout=180.0):
     while time.monotonic() < deadline and '/stack_cans' in rosnode.get_node_names():
         time.sleep(0.5)
     return '/stack_cans' not in rosnode.get_node_names(), rospy.Time.now().to_sec() - start_sim
+
+
+class Watch:
+    """What a run shows from outside, kept from now on: stack_cans' reports on /rosout and the
+    grasp fix's events."""
+
+    def __init__(self):
+        self.lock = threading.Lock()
+        self.reports, self.events = [], []
+        rospy.Subscriber('/rosout', Log, self._keep_report, queue_size=1000)
+        rospy.Subscriber('/gazebo/grasp_events', GazeboGraspEvent, self._keep_event, queue_size=100)
+
+    def _keep_report(self, msg):
+        if msg.name == '/stack_cans':
+            with self.lock:
+                self.reports.append(msg.msg)
+
+    def _keep_event(self, msg):
+        with self.lock:
+            self.events.append(msg)
+
+
+def truth(gazebo, name):
+    """A model's pose in the world, from /gazebo/get_model_state."""
+    state = gazebo.state(name)
+    assert state.success, name
+    return state.pose

@@ -8,16 +8,13 @@ Ground truth from /gazebo/get_model_state."""
 import math
 import re
 import sys
-import threading
 import unittest
 
 import rospy
 import rostest
-from gazebo_grasp_plugin_ros.msg import GazeboGraspEvent
-from rosgraph_msgs.msg import Log
 
 from bullet_sim_testing.gazebo import Gazebo
-from stack_cans_run import CAN_HEIGHT, TABLE, run_until_stack_cans_exits, tilt, wait_for_cans
+from stack_cans_run import CAN_HEIGHT, TABLE, Watch, run_until_stack_cans_exits, tilt, truth, wait_for_cans
 
 LAYOUT = [(0.1896, 0.3250), (0.3372, -0.2833), (0.4196, 0.1453), (0.3970, -0.0842)]
 CANS = ['can_1', 'can_2', 'can_3', 'can_4']
@@ -28,29 +25,14 @@ class StackCansFreeSpotTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         rospy.init_node('test_stack_cans_free_spot')
-        cls.lock = threading.Lock()
-        cls.events, cls.reports = [], []
-        rospy.Subscriber('/gazebo/grasp_events', GazeboGraspEvent, cls.keep_event, queue_size=100)
-        rospy.Subscriber('/rosout', Log, cls.keep_report, queue_size=1000)
+        cls.watch = Watch()
         cls.gazebo = Gazebo()
         wait_for_cans()
         cls.finished, cls.sim_seconds = run_until_stack_cans_exits()
-
-    @classmethod
-    def keep_event(cls, msg):
-        with cls.lock:
-            cls.events.append(msg)
-
-    @classmethod
-    def keep_report(cls, msg):
-        if msg.name == '/stack_cans':
-            with cls.lock:
-                cls.reports.append(msg.msg)
+        cls.reports, cls.events = cls.watch.reports, cls.watch.events
 
     def truth(self, name):
-        state = self.gazebo.state(name)
-        self.assertTrue(state.success, name)
-        return state.pose
+        return truth(self.gazebo, name)
 
     def test_1_four_high_on_the_free_spot_it_named(self):
         self.assertTrue(self.finished, 'stack_cans still running after 180 s')

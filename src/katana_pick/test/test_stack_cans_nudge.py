@@ -13,10 +13,9 @@ import unittest
 import rospy
 import rostest
 from geometry_msgs.msg import PoseArray
-from rosgraph_msgs.msg import Log
 
 from bullet_sim_testing.gazebo import Gazebo
-from stack_cans_run import CAN_HEIGHT, TABLE, run_until_stack_cans_exits, tilt, wait_for_cans
+from stack_cans_run import CAN_HEIGHT, TABLE, Watch, run_until_stack_cans_exits, tilt, truth, wait_for_cans
 
 NEAR = (0.2423, 0.0943)  # 0.26 m out, 0.371 rad
 CANS = ['can_1', 'can_2', 'can_3']
@@ -28,28 +27,21 @@ class StackCansNudgeTest(unittest.TestCase):
     def setUpClass(cls):
         rospy.init_node('test_stack_cans_nudge')
         cls.lock = threading.Lock()
-        cls.looks, cls.reports = [], []
+        cls.looks = []
         rospy.Subscriber('/stack_cans/cans', PoseArray, cls.keep_look, queue_size=10)
-        rospy.Subscriber('/rosout', Log, cls.keep_report, queue_size=1000)
+        cls.watch = Watch()
         cls.gazebo = Gazebo()
         wait_for_cans()
         cls.finished, cls.sim_seconds = run_until_stack_cans_exits()
+        cls.reports = cls.watch.reports
 
     @classmethod
     def keep_look(cls, msg):
         with cls.lock:
             cls.looks.append([(p.position.x, p.position.y) for p in msg.poses])
 
-    @classmethod
-    def keep_report(cls, msg):
-        if msg.name == '/stack_cans':
-            with cls.lock:
-                cls.reports.append(msg.msg)
-
     def truth(self, name):
-        state = self.gazebo.state(name)
-        self.assertTrue(state.success, name)
-        return state.pose
+        return truth(self.gazebo, name)
 
     def test_1_the_near_can_is_nudged_into_reach_and_seen_there(self):
         self.assertTrue(self.finished, 'stack_cans still running after 180 s')
