@@ -177,6 +177,9 @@ def check(seed, count, region):
             cause = 'tip-over'
         else:
             cause = 'slip'
+    # How far each can in the column stands off the bottom can's axis (a place's lateral error, summed up the tower).
+    offsets = [math.hypot(after[n].position.x - after[column[0]].position.x,
+                          after[n].position.y - after[column[0]].position.y) for n in column[1:]]
     seen = [(p.position.x, p.position.y) for p in detected[0].poses]
     errors = [min(math.dist(s, c) for s in seen) for c in layout] if seen else []
     errors_line = re.findall(r'stack_cans: .*(?:unreachable|nothing between|ended the move|did not|given up).*', log)
@@ -184,7 +187,7 @@ def check(seed, count, region):
                       'stacked': len(column), 'stackable': most, 'knocked': knocked,
                       'unreported': max(0, count - len(column) - reported), 'cause': cause,
                       'sim_s': sim_s, 'wall_s': wall_s, 'moved': len({o for o, held in events if held}),
-                      'found': len(seen), 'detection_errors': errors, 'events': events,
+                      'found': len(seen), 'detection_errors': errors, 'offsets': offsets, 'events': events,
                       'errors': errors_line[:4], 'sim_time': world().sim_time}), flush=True)
 
 
@@ -215,6 +218,10 @@ def summarise(results, count, command):
              mean(per_can_wall)))
     print('detection: %d of %d cans found; error mean %.1f mm, max %.1f mm'
           % (count * n - missed, count * n, 1e3 * mean(errors), 1e3 * max(errors, default=float('nan'))))
+    offsets = sorted(o for r in results for o in r.get('offsets', []))
+    if offsets:
+        print('tower: %d cans on another; off the bottom can\'s axis mean %.1f mm, 95th percentile %.1f mm, max %.1f mm'
+              % (len(offsets), 1e3 * mean(offsets), 1e3 * offsets[int(0.95 * (len(offsets) - 1))], 1e3 * offsets[-1]))
     for r in results:
         if not r['success']:
             print('  seed %d: %s, %d of %d stacked (reach: %d) %s'
