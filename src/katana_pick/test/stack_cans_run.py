@@ -21,6 +21,32 @@ def tilt(orientation):
     return 2 * math.asin(min(1.0, math.hypot(orientation.x, orientation.y)))
 
 
+# A can set on another stands at most this far off the axis of the can at the bottom: placed cans
+# stand 0-3 mm off it (scripts/bench_katana_stacking.py prints the spread), half a can radius
+# (16 mm) would still stand but means a place went wrong.
+TOWER_AXIS_TOLERANCE = 0.015
+
+
+def tower_faults(poses):
+    """What keeps `poses` ({name: pose}) from being one upright tower standing on the table, a
+    can to a level, bottom first: one line per fault, each naming the can; empty if none."""
+    column = sorted(poses, key=lambda n: poses[n].position.z)
+    bottom = poses[column[0]].position
+    faults = []
+    for level, name in enumerate(column):
+        p = poses[name]
+        at = '%s at (%.4f, %.4f, %.4f)' % (name, p.position.x, p.position.y, p.position.z)
+        if abs(p.position.z - (TABLE + level * CAN_HEIGHT)) > 0.005:
+            faults.append('%s: not at level %d (z %.4f)' % (at, level, TABLE + level * CAN_HEIGHT))
+        off = math.hypot(p.position.x - bottom.x, p.position.y - bottom.y)
+        if off > TOWER_AXIS_TOLERANCE:
+            faults.append("%s, level %d: %.1f mm off the bottom can's axis (%s at most %.0f mm)"
+                          % (at, level, 1e3 * off, column[0], 1e3 * TOWER_AXIS_TOLERANCE))
+        if tilt(p.orientation) > math.radians(3):
+            faults.append('%s: tilted %.1f deg' % (at, math.degrees(tilt(p.orientation))))
+    return faults
+
+
 def wait_for_cans(timeout=60.0):
     """The cans stack_cans found (its latched ~cans); AssertionError if none came in `timeout` s."""
     deadline = time.monotonic() + timeout
