@@ -171,10 +171,10 @@ def check(seed, count, region):
             cause = 'unreachable'
         elif any((n, True) in events and (n, False) not in events for n in moved):
             cause = 'no release'  # first: a can left in the gripper spoils the moves after it
+        elif knocked:
+            cause = 'tip-over'  # before 'no attach': with the whole tower down, the tower's own can counts as moved
         elif any((n, True) not in events for n in moved):
             cause = 'no attach'
-        elif knocked:
-            cause = 'tip-over'
         else:
             cause = 'slip'
     # How far each can in the column stands off the bottom can's axis (a place's lateral error, summed up the tower).

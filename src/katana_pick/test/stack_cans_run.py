@@ -40,7 +40,7 @@ def tower_faults(poses):
             faults.append('%s: not at level %d (z %.4f)' % (at, level, TABLE + level * CAN_HEIGHT))
         off = math.hypot(p.position.x - bottom.x, p.position.y - bottom.y)
         if off > TOWER_AXIS_TOLERANCE:
-            faults.append("%s, level %d: %.1f mm off the bottom can's axis (%s at most %.0f mm)"
+            faults.append('%s, level %d: %.1f mm off the axis of %s, the bottom can (at most %.0f mm)'
                           % (at, level, 1e3 * off, column[0], 1e3 * TOWER_AXIS_TOLERANCE))
         if tilt(p.orientation) > math.radians(3):
             faults.append('%s: tilted %.1f deg' % (at, math.degrees(tilt(p.orientation))))

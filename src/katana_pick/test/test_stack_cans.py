@@ -9,10 +9,9 @@ import unittest
 
 import rospy
 import rostest
-from gazebo_grasp_plugin_ros.msg import GazeboGraspEvent
 
 from bullet_sim_testing.gazebo import Gazebo
-from stack_cans_run import run_until_stack_cans_exits, tower_faults, wait_for_cans
+from stack_cans_run import Watch, run_until_stack_cans_exits, tower_faults, truth, wait_for_cans
 
 CANS = ['can_1', 'can_2', 'can_3']  # at (0.31, -0.18), (0.38, 0.0), (0.31, 0.18): can_2 is the middle one
 TOWER = 'can_2'
@@ -22,16 +21,14 @@ class StackCansTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         rospy.init_node('test_stack_cans')
-        cls.events = []
-        rospy.Subscriber('/gazebo/grasp_events', GazeboGraspEvent, cls.events.append)
+        cls.watch = Watch()
         cls.gazebo = Gazebo()
         cls.detected = wait_for_cans()
         cls.finished, cls.sim_seconds = run_until_stack_cans_exits()
+        cls.events = cls.watch.events
 
     def truth(self, name):
-        state = self.gazebo.state(name)
-        self.assertTrue(state.success, name)
-        return state.pose
+        return truth(self.gazebo, name)
 
     def test_1_cans_are_found_where_they_stand(self):
         self.assertEqual(self.detected.header.frame_id, 'katana_base_link')

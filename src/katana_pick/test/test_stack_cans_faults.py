@@ -10,11 +10,9 @@ import unittest
 
 import rospy
 import rostest
-from gazebo_grasp_plugin_ros.msg import GazeboGraspEvent
-from rosgraph_msgs.msg import Log
 
 from bullet_sim_testing.gazebo import Gazebo
-from stack_cans_run import TABLE, run_until_stack_cans_exits, tower_faults, wait_for_cans
+from stack_cans_run import TABLE, Watch, run_until_stack_cans_exits, tower_faults, truth, wait_for_cans
 
 LAYOUT = {'can_1': (0.31, -0.18), 'can_2': (0.38, 0.0), 'can_3': (0.31, 0.18), 'can_4': (0.45, -0.45)}
 
@@ -23,18 +21,15 @@ class StackCansFaultsTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         rospy.init_node('test_stack_cans_faults')
-        cls.events, cls.reports = [], []
-        rospy.Subscriber('/gazebo/grasp_events', GazeboGraspEvent, cls.events.append)
-        rospy.Subscriber('/rosout', Log, lambda m: m.name == '/stack_cans' and cls.reports.append(m.msg))
+        cls.watch = Watch()
         cls.gazebo = Gazebo()
         cls.detected = wait_for_cans()
         cls.deleted = cls.gazebo.delete_model(model_name='can_3').success
         cls.finished, _ = run_until_stack_cans_exits()
+        cls.events, cls.reports = cls.watch.events, cls.watch.reports
 
     def truth(self, name):
-        state = self.gazebo.state(name)
-        self.assertTrue(state.success, name)
-        return state.pose
+        return truth(self.gazebo, name)
 
     def reported(self, pattern, can=None):
         """The reports with every string of pattern in them and, given a can's (x, y), about a can
