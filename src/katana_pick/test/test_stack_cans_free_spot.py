@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """stack_cans_free_spot.test: four cans, and no can's spot takes all four. stack_cans says where
 the tower goes up instead, sets the first can down there (at a steep grasp, -0.84 rad: the open
-fingers still touch the can's rim) and stacks the other three on it, where a look after setting it down saw it: one upright tower, four
-high, on the spot it named. The grasp fix attaches and lets go of each can once (before, open
-fingers resting on the rim gripped the can again and the back-away dragged it off the spot).
+fingers still touch the can's rim) and stacks the other three on it: one upright tower, four high,
+on the spot it named. The grasp fix attaches and lets go of each can once (before, open fingers
+resting on the rim gripped the can again and the back-away dragged it off the spot).
 Ground truth from /gazebo/get_model_state."""
 import math
 import re
@@ -56,23 +56,6 @@ class StackCansFreeSpotTest(unittest.TestCase):
             self.assertEqual(e.arm, 'katana')
             by_can.setdefault(e.object, []).append(e.attached)
         self.assertEqual(by_can, {name: [True, False] for name in CANS})
-
-    def test_3_the_first_can_is_looked_at_where_it_was_set_down(self):
-        # The cans after it go where it stands, not where the plan put it.
-        self.assertTrue(self.finished)
-        number = r'\((-?[\d.]+), (-?[\d.]+)\)'
-        looked = [re.search(r"the tower's first can stands at %s, ([\d.]+) mm from where it was set down at %s"
-                            % (number, number), r) for r in self.reports]
-        looked = [m for m in looked if m]
-        self.assertEqual(len(looked), 1, self.reports)
-        at, spot = [(float(looked[0].group(k)), float(looked[0].group(k + 1))) for k in (1, 4)]
-        named = [r for r in self.reports if 'the tower goes up at (%.3f, %.3f)' % spot in r]
-        self.assertEqual(len(named), 1, (spot, self.reports))
-        self.assertAlmostEqual(float(looked[0].group(3)), 1e3 * math.dist(at, spot), delta=1.0)  # 1 mm print rounding
-        bottom = min((self.truth(n) for n in CANS), key=lambda p: p.position.z).position
-        # Seen within the detection's error (1.3 mm at most over 200 cans); the three cans set on
-        # it since may have pushed it a little (2 mm in a run looked at by hand).
-        self.assertLess(math.dist(at, (bottom.x, bottom.y)), 0.005)
 
 
 if __name__ == '__main__':
