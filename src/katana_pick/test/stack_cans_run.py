@@ -58,10 +58,10 @@ def wait_for_cans(timeout=60.0):
     raise AssertionError('stack_cans published no cans within %.0f s' % timeout)
 
 
-def run_until_stack_cans_exits(timeout=180.0):
-    """The simulation unthrottled until stack_cans exits: (whether it did within `timeout` wall
-    seconds, the sim seconds that took)."""
-    set_real_time_factor(0.0)
+def run_until_stack_cans_exits(timeout=180.0, real_time_factor=0.0):
+    """The simulation at `real_time_factor` (0: unthrottled) until stack_cans exits: (whether it
+    did within `timeout` wall seconds, the sim seconds that took)."""
+    set_real_time_factor(real_time_factor)
     start_sim = rospy.Time.now().to_sec()
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline and '/stack_cans' in rosnode.get_node_names():
