@@ -1,5 +1,6 @@
-"""What the stack_cans rostests share: the scene's sizes, a can's tilt, and one run of
-stack_cans.launch watched from outside (bring-up at the world's own pace, then as fast as it goes)."""
+"""What the stack_cans rostests share: the scene's sizes, a can's tilt, the check of a tower, and
+one run of stack_cans.launch watched from outside (bring-up at the world's own pace, then at the
+test's real-time factor, unthrottled by default): its reports, grasp events and ground truth."""
 import math
 import threading
 import time
