@@ -152,12 +152,14 @@ class ExplorationNode:
             self.report(SEND, decision.message)
 
     def report(self, kind, message):
-        """Log and publish a change of state (waiting messages at most every 10 s)."""
+        """Log and publish a change of state. A new reason to wait is said at once; the same reason with
+        other details (a tf error's times) at most every 10 s."""
         state = (kind, message)
         now = rospy.get_time()
         same_kind = self.state is not None and self.state[0] == kind
+        same_reason = same_kind and message.split(':')[0] == self.state[1].split(':')[0]
         if state == self.state or (same_kind and kind == COMPLETE) or \
-                (same_kind and kind == WAIT and now - self.last_report < 10):
+                (same_reason and kind == WAIT and now - self.last_report < 10):
             return
         self.state, self.last_report = state, now
         if kind == SEND:
