@@ -64,7 +64,7 @@ std::vector<GraspDetector::Event> GraspDetector::update(const std::vector<Touch>
       s.tightest = std::min(s.tightest, spread);
       const double opened = spread - s.tightest;
       if (opened > options_.release_tolerance ||
-          (untouched && opened > GraspFixOptions::kOpenedOffFraction * options_.release_tolerance)) {
+          (!gripped && opened > GraspFixOptions::kOpenedOffFraction * options_.release_tolerance)) {
         s = State{};  // released: start again from nothing
         s.let_go = true;
         s.widest = spread;

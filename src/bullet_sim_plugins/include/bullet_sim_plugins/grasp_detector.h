@@ -10,14 +10,16 @@
 // attached. It is released when the gripper opens: the gripper links' spread (the plugin passes
 // the mean distance of their centres of mass from their centroid) grows by more than
 // release_tolerance beyond the tightest it has been since the attach, or it has opened by a fifth
-// of that and no gripper link touches the object any more. Measuring from the tightest spread, not
-// from the spread at the attach, means a gripper that closes further after the attach still lets
-// go as soon as it opens (upstream compares with the attach and can hold for ever). The second
-// rule lets go of an object held near the fingers' hinges, where opening moves the fingers off it
-// by less than the tolerance: a can deep in the Katana's gripper, fingers stalled at 0.18 rad,
-// spread only 4.2 mm on opening to katana_driver's open 0.30 rad, under the tutorial's 5 mm, and
-// stayed in the open gripper. While held, the fingers press on the object; only an opening
-// leaves them off it.
+// of that and is no longer gripped (one gripper link on it at most). Measuring from the tightest
+// spread, not from the spread at the attach, means a gripper that closes further after the attach
+// still lets go as soon as it opens (upstream compares with the attach and can hold for ever).
+// The second rule lets go of an object held near the fingers' hinges, where opening moves the
+// fingers off it by less than the tolerance: a can deep in the Katana's gripper, fingers stalled
+// at 0.18 rad, spread only 4.2 mm on opening to katana_driver's open 0.30 rad, under the
+// tutorial's 5 mm, and stayed in the open gripper. It also lets go when one finger opens and the
+// other stays on the object: a finger whose edge rests on a held can's side is pinned there, as
+// the can fixed to the palm cannot give way (old-band seed 14: 3.5 mm, and the back-away pulled
+// the tower over). While held, the fingers press on the object; only an opening leaves them off it.
 // A released object starts again from a count of 0, and is not counted at all until the gripper
 // closes again (its spread falls a fifth of release_tolerance below its widest since the
 // release). Upstream counts it at once, so open fingers that rest on it grip it again
