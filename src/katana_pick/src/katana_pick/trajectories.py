@@ -177,19 +177,42 @@ def plan_can_from_here(geometry: KatanaGeometry, q_now: Sequence[float], can, to
     if home is None:
         raise failure
     # Back to where the arm started, from here or from the top of the turned rise.
-    for move in (None, turned) if turned is not None else (None,):
-        before = [] if move is None else [(move, joint_path(geometry, q_now, move, timing=timing))]
+    way = way_home(geometry, q_now, home, obstacles, options, timing)
+    if way is None:
+        raise failure
+    try:
+        steps, paths = plan_can(geometry, home, can, tower, level, options, timing=timing, standing=standing)
+    except PlanError:
+        raise failure from None
+    return [m for m, _ in way] + steps, [p for _, p in way] + paths
+
+
+def way_home(geometry: KatanaGeometry, q_now: Sequence[float], home: Sequence[float], obstacles,
+             options: StackingOptions = StackingOptions(),
+             timing: TimingOptions = TimingOptions()) -> Optional[List[Tuple[Move, JointPath]]]:
+    """The open gripper's way from q_now back to the joints `home`, as (move, path) pairs: back_off's
+    (straight up where the arm can, then the joints home) if the fingers clear the obstacles along
+    it, else the gripper first turned to a pitch at which it rises, and up; None if neither clears
+    them. The straight rise is not checked: it lifts the fingers off whatever they are at. Near the
+    base the elbow's limit stops that rise, and a joint move home from beside a can can sweep the
+    fingers through it."""
+    fingers = Held(options.fingers_drop, options.fingers_radius)
+    turned = None
+    for first in (False, True):
+        before = []
+        if first:
+            here = tool_pose(geometry, q_now)
+            turned = _turned_and_up(geometry, q_now, here.z + options.retreat_distance, fingers, obstacles, options,
+                                    timing)
+            if turned is None:
+                return None
+            before = [(turned, joint_path(geometry, q_now, turned, timing=timing))]
         q = before[-1][1].positions[-1] if before else tuple(q_now)
-        home_path = back_off(geometry, q, home, options, timing=timing)
-        if path_conflict(geometry, (q,) + home_path.positions, fingers, obstacles) is not None:
-            continue
-        try:
-            steps, paths = plan_can(geometry, home, can, tower, level, options, timing=timing, standing=standing)
-        except PlanError:
-            break  # the same from wherever the arm comes home from
-        home_move = Move('back to where the arm started', (home_path.end,), line=False)
-        return [m for m, _ in before] + [home_move] + steps, [p for _, p in before] + [home_path] + paths
-    raise failure
+        path = back_off(geometry, q, home, options, timing=timing)
+        risen = path.positions[-3] if len(path.positions) > 2 else q  # the top of the straight rise
+        if path_conflict(geometry, (risen,) + path.positions[-2:], fingers, obstacles) is None:
+            return before + [(Move('back to where the arm started', (path.end,), line=False), path)]
+    return None
 
 
 def _turned_and_up(geometry, q_now, up, fingers, obstacles, options, timing):

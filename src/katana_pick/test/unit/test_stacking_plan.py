@@ -12,8 +12,9 @@ from katana_pick import katana_ik  # noqa: E402
 from katana_pick.arm_geometry import KatanaGeometry, within_limits  # noqa: E402
 from katana_pick.stacking import (Grip, Move, StackingOptions, ToolPose, can_steps, carry_height,  # noqa: E402
                                   choose_tower, interpolate, pick_order, pitches)
+from katana_pick.clearance import Held, Obstacle, path_conflict, tower_and_cans  # noqa: E402
 from katana_pick.trajectories import (PlanError, TimingOptions, back_off, plan_can, plan_can_from_here,  # noqa: E402
-                                      tool_pose)
+                                      tool_pose, way_home)
 
 G = KatanaGeometry()
 O = StackingOptions()
@@ -207,3 +208,31 @@ def test_backing_off_goes_straight_up_then_home():
     stretched = back_off(G, START, (0.0, 0.5, 0.0, 0.0, 0.0))
     assert len(stretched.positions) == 2 and stretched.positions[-1] == (0.0, 0.5, 0.0, 0.0, 0.0)
     assert stretched.times[0] == pytest.approx(0.5 / TimingOptions().joint_speed)
+
+
+def test_the_way_home_after_a_failure_keeps_the_open_fingers_off_the_cans():
+    fingers = Held(O.fingers_drop, O.fingers_radius)
+    # The first can set on the table at a free spot near the base: the rise stops below its top.
+    spot = (0.36, 0.1)
+    steps, paths = plan_can(G, START, (0.40, 0.2), spot, 0)
+    low = paths[-1].positions[-1]
+    assert tool_pose(G, low).z < O.can_height
+    first_can = tower_and_cans(spot, 1, (), O.can_height, O.can_radius)
+    # Straight home from there (no straight rise: the elbow's limit) sweeps the fingers through it.
+    straight = back_off(G, low, START)
+    assert len(straight.positions) == 2
+    assert path_conflict(G, (low,) + straight.positions, fingers, first_can) is not None
+    way = way_home(G, low, START, first_can)
+    assert [m.what for m, _ in way][-1] == 'back to where the arm started'
+    assert way[0][0].what.startswith('the gripper turned to')
+    points = (low,) + tuple(q for _, path in way for q in path.positions)
+    assert points[-1] == START
+    assert path_conflict(G, points, fingers, first_can) is None
+    # Where back_off's way is clear (fingers about a can, straight up, home), it is back_off's.
+    steps, paths = plan_can(G, START, (0.35, 0.1), (0.38, -0.12), 1)
+    at_can = paths[1].positions[-1]
+    way = way_home(G, at_can, START, tower_and_cans((0.38, -0.12), 1, (), O.can_height, O.can_radius))
+    assert len(way) == 1 and way[0][1] == back_off(G, at_can, START)
+    # No way ends clear where something stands where home puts the fingers.
+    home_tool = tool_pose(G, START)
+    assert way_home(G, at_can, START, (Obstacle(home_tool.x, home_tool.y, 0.3, O.can_radius),)) is None
