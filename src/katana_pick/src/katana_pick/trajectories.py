@@ -43,6 +43,13 @@ def tool_pose(geometry: KatanaGeometry, q: Sequence[float]) -> ToolPose:
     return ToolPose(x, y, z, pitch)
 
 
+def landed(geometry: KatanaGeometry, q_now: Sequence[float], path: JointPath, tolerance: float) -> bool:
+    """Whether the tool at joints q_now is within tolerance (m) of where path ends: a move onto
+    the tower the controller called failed may still have set the can down."""
+    now = tool_pose(geometry, q_now)
+    return math.dist((now.x, now.y, now.z), (path.end.x, path.end.y, path.end.z)) <= tolerance
+
+
 def joint_path(geometry: KatanaGeometry, q_start: Sequence[float], move: Move, roll: float = 0.0,
                timing: TimingOptions = TimingOptions()) -> JointPath:
     """The move from the arm's joints q_start, as timed via points; PlanError if a point is out
@@ -136,7 +143,7 @@ def plan_can_from_here(geometry: KatanaGeometry, q_now: Sequence[float], can, to
     """plan_can from the arm's joints q_now or, where that finds nothing, after a first move that
     takes the tool farther from what it last let go of: up by retreat_distance, back along the
     line to the base by approach_distance, or both; the empty gripper turned to a pitch at which
-    it rises, and up; last, back to the joints `home` (where the arm started, by back_off's way),
+    it rises, and up; last, back to the joints `home` (where the arm started, by way_home),
     from here or from that rise. After a can the open fingers are just behind the tower and little
     above its top, and the way from there to the next can may pass too close to it, while from
     higher or farther back it does not. Near the base the straight moves may be out of reach (a
@@ -197,7 +204,6 @@ def way_home(geometry: KatanaGeometry, q_now: Sequence[float], home: Sequence[fl
     base the elbow's limit stops that rise, and a joint move home from beside a can can sweep the
     fingers through it."""
     fingers = Held(options.fingers_drop, options.fingers_radius)
-    turned = None
     for first in (False, True):
         before = []
         if first:

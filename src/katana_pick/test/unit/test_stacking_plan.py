@@ -13,8 +13,8 @@ from katana_pick.arm_geometry import KatanaGeometry, within_limits  # noqa: E402
 from katana_pick.stacking import (Grip, Move, StackingOptions, ToolPose, can_steps, carry_height,  # noqa: E402
                                   choose_tower, interpolate, pick_order, pitches)
 from katana_pick.clearance import Held, Obstacle, path_conflict, tower_and_cans  # noqa: E402
-from katana_pick.trajectories import (PlanError, TimingOptions, back_off, plan_can, plan_can_from_here,  # noqa: E402
-                                      tool_pose, way_home)
+from katana_pick.trajectories import (PlanError, TimingOptions, back_off, landed, plan_can,  # noqa: E402
+                                      plan_can_from_here, tool_pose, way_home)
 
 G = KatanaGeometry()
 O = StackingOptions()
@@ -208,6 +208,26 @@ def test_backing_off_goes_straight_up_then_home():
     stretched = back_off(G, START, (0.0, 0.5, 0.0, 0.0, 0.0))
     assert len(stretched.positions) == 2 and stretched.positions[-1] == (0.0, 0.5, 0.0, 0.0, 0.0)
     assert stretched.times[0] == pytest.approx(0.5 / TimingOptions().joint_speed)
+
+
+def test_a_can_lowered_onto_the_tower_is_down_where_the_tool_stands_near_the_place():
+    steps, paths = plan_can(G, START, (0.35, 0.1), (0.38, -0.12), 1)
+    moves = [s for s in steps if isinstance(s, Move)]
+    assert [m.what for m in moves if m.lands] == ['lower onto the tower']
+    lower = paths[moves.index(next(m for m in moves if m.lands))]
+    place = lower.end
+    q = lower.positions[-1]
+    # The wrist roll twisted by the tower's top (old seed 46: 0.057 rad, past the 0.05 tolerance):
+    # the roll does not move the tool frame, so the can is on the tower.
+    assert landed(G, q[:4] + (q[4] + 0.06,), lower, O.landing_tolerance)
+
+    def held_up(dz):  # the arm held dz above the place (the can resting on the tower's top)
+        return katana_ik.solve(G, place.x, place.y, place.z + dz, place.pitch, seed=q)
+    assert landed(G, held_up(0.003), lower, O.landing_tolerance)
+    assert landed(G, held_up(0.009), lower, O.landing_tolerance)
+    # Held up more than the tolerance: still in the air, a failure.
+    assert not landed(G, held_up(0.011), lower, O.landing_tolerance)
+    assert not landed(G, START, lower, O.landing_tolerance)
 
 
 def test_the_way_home_after_a_failure_keeps_the_open_fingers_off_the_cans():
