@@ -150,7 +150,9 @@ class KatanaGripperActionTest(unittest.TestCase):
             text = self.client.get_goal_status_text()
             self.assertIn('outside gripper range [-0.44, 0.3]', text)
             self.assertIn(str(position), text)
-            self.assertLess(took, 0.2)
+            # At once: far under the 3 s goal_timeout a goal that was tried would run into (a busy
+            # CI machine has taken 0.28 s for the round trip); the fingers not moving is checked below.
+            self.assertLess(took, 1.0)
         self.assert_settled_at(0.1)
         for name in FINGERS:
             self.assertLessEqual(abs(self.latest()[name][0] - before[name][0]), THRESHOLD)

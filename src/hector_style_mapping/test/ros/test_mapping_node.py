@@ -192,7 +192,9 @@ class MappingNodeTest(unittest.TestCase):
             print('mapper after a 0.9 m drive: (%.4f, %.4f, %.4f), truth (0.8, 0.4, 0.16)' % (x, y, yaw))
             self.assertLess(math.hypot(x - 0.8, y - 0.4), 0.02)
             self.assertLess(abs(yaw - 0.16), 0.01)
-            t = self.tf.lookup_transform('map', 'base_link', rospy.Time(0), rospy.Duration(2))
+            with self.lock:  # the tf of the same scan (the newest may still be one scan behind)
+                stamp = self.poses[-1].header.stamp
+            t = self.tf.lookup_transform('map', 'base_link', stamp, rospy.Duration(2))
             self.assertAlmostEqual(t.transform.translation.x, x, delta=0.01)
         finally:
             self.drive(reversed(path))  # back to the origin for the tests that follow
