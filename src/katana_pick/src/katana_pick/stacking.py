@@ -49,7 +49,9 @@ class StackingOptions:
     grasp_height_step: float = 0.01
     carry_step: float = 0.02          # m between the carry heights tried
     # The open fingers as clearance.py models them: their tips hang at most 0.023 m + the
-    # finger's half width below the tool frame, and open they span 0.08 m.
+    # finger's half width below the tool frame. The URDF's open fingers (0.30 rad) reach 0.058 m
+    # to the side, not 0.04: an approach that passes a can that closely can push it (docs/KATANA.md,
+    # "Cause found"). A truer radius changes plans throughout and waits for the stacking benchmarks.
     fingers_drop: float = 0.03
     fingers_radius: float = 0.04
 
