@@ -51,7 +51,8 @@ class StackingOptions:
     # The open fingers as clearance.py models them: their tips hang at most 0.023 m + the
     # finger's half width below the tool frame. The URDF's open fingers (0.30 rad) reach 0.058 m
     # to the side, not 0.04: an approach that passes a can that closely can push it (docs/KATANA.md,
-    # "Cause found"). A truer radius changes plans throughout and waits for the stacking benchmarks.
+    # "Cause found"). A uniform 0.06 m refuses needed plans (ahead they reach only 0.019 m); the
+    # fingers as points where the URDF puts them (branch fingers-radius) change the tutorial's tower.
     fingers_drop: float = 0.03
     fingers_radius: float = 0.04
 
