@@ -15,8 +15,9 @@ measures its real-time factor over --rtf-seconds with the browser on each of the
   studio  the studio's World view drawing the moving world (30 frames a second on a CPU renderer)
 
 A page window's slow-down is 1 - its RTF / the mean of the round's `none` and the next one's;
-the median and quartiles over the rounds, with the cores the browser used meanwhile. If `webgl`
-alone costs more than the target (5 %), no WebGL page can meet it on this machine.
+the median and quartiles over the rounds, with the cores the browser used meanwhile. The bare
+pages show how much of the studio's cost is Chromium's own; on a noisy machine the cores a frame
+costs are the steadier figure (docs/PERFORMANCE.md).
 """
 import argparse
 import base64
