@@ -24,14 +24,13 @@ import base64
 import json
 import os
 import statistics
-import subprocess
 import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(HERE, "..", "test", "browser"))
-from bench_studio_world import EXPECTED, Motion, World, load_average, percentile  # noqa: E402
+from bench_studio_world import Motion, World, load_average, measure_in_children, percentile  # noqa: E402
 
 COMMAND = "src/sim_studio_tests/bench/bench_studio_floor.py"
 PAGES = ("2d", "webgl", "studio")
@@ -136,17 +135,8 @@ def main():
     if args.one:
         print("RESULT " + json.dumps(measure(args.one, args.rounds, args.rtf_seconds)), flush=True)
         return
-    results = []
-    for name in args.worlds.split(","):
-        if name not in EXPECTED:
-            raise SystemExit("--worlds: expected katana and/or maze, got %r" % name)
-        print("measuring %s ..." % name, flush=True)
-        child = subprocess.run([sys.executable, os.path.abspath(__file__), "--one", name, "--rounds", str(args.rounds),
-                                "--rtf-seconds", str(args.rtf_seconds)], stdout=subprocess.PIPE, text=True)
-        lines = [line for line in child.stdout.splitlines() if line.startswith("RESULT ")]
-        if child.returncode != 0 or not lines:
-            raise SystemExit("%s: the measurement failed (exit %d):\n%s" % (name, child.returncode, child.stdout))
-        results.append(json.loads(lines[-1][len("RESULT "):]))
+    results = measure_in_children(os.path.abspath(__file__), args.worlds,
+                                  ["--rounds", str(args.rounds), "--rtf-seconds", str(args.rtf_seconds)])
     report(results, sys.argv[1:])
 
 

@@ -378,6 +378,22 @@ def report(results, argv):
     print("\nreproduce: %s %s" % (COMMAND, " ".join(argv)))
 
 
+def measure_in_children(script, worlds, arguments):
+    """Each of the comma-separated `worlds` measured by `script --one WORLD ARGUMENTS` in a child
+    process of its own (its own roslaunch and master): the children's RESULT dicts, in order."""
+    results = []
+    for name in worlds.split(","):
+        if name not in EXPECTED:
+            raise SystemExit("--worlds: expected katana and/or maze, got %r" % name)
+        print("measuring %s ..." % name, flush=True)
+        child = subprocess.run([sys.executable, script, "--one", name] + arguments, stdout=subprocess.PIPE, text=True)
+        lines = [line for line in child.stdout.splitlines() if line.startswith("RESULT ")]
+        if child.returncode != 0 or not lines:
+            raise SystemExit("%s: the measurement failed (exit %d):\n%s" % (name, child.returncode, child.stdout))
+        results.append(json.loads(lines[-1][len("RESULT "):]))
+    return results
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--worlds", default="katana,maze", help="comma-separated: katana, maze")
@@ -391,19 +407,9 @@ def main():
         print("RESULT " + json.dumps(measure(args.one, args.seconds, args.moves, args.rounds, args.rtf_seconds)),
               flush=True)
         return
-    results = []
-    for name in args.worlds.split(","):
-        if name not in EXPECTED:
-            raise SystemExit("--worlds: expected katana and/or maze, got %r" % name)
-        print("measuring %s ..." % name, flush=True)
-        child = subprocess.run([sys.executable, os.path.abspath(__file__), "--one", name, "--seconds",
-                                str(args.seconds), "--moves", str(args.moves), "--rounds", str(args.rounds),
-                                "--rtf-seconds", str(args.rtf_seconds)],
-                               stdout=subprocess.PIPE, text=True)
-        lines = [line for line in child.stdout.splitlines() if line.startswith("RESULT ")]
-        if child.returncode != 0 or not lines:
-            raise SystemExit("%s: the measurement failed (exit %d):\n%s" % (name, child.returncode, child.stdout))
-        results.append(json.loads(lines[-1][len("RESULT "):]))
+    results = measure_in_children(os.path.abspath(__file__), args.worlds,
+                                  ["--seconds", str(args.seconds), "--moves", str(args.moves),
+                                   "--rounds", str(args.rounds), "--rtf-seconds", str(args.rtf_seconds)])
     report(results, sys.argv[1:])
 
 
