@@ -58,7 +58,7 @@ def free_spots(cans: Sequence[Tuple[float, float]], geometry: KatanaGeometry = K
     bearings = sorted(math.atan2(y, x) for x, y in cans)
     tried = [(a + b) / 2 for a, b in zip(bearings, bearings[1:])] + [bearings[0] - BESIDE, bearings[-1] + BESIDE]
     tried = [b for b in tried if abs(b) <= math.pi / 2]
-    clear = 2 * (options.can_radius + options.fingers_radius)
+    clear = 2 * options.can_radius + options.spot_gap
     spots = [(r * math.cos(b), r * math.sin(b)) for r in grid if sizes[r] == most for b in tried]
     spots = [s for s in spots if all(math.dist(s, c) >= clear for c in cans)]
     # Nearest the cans first: the shortest carries.

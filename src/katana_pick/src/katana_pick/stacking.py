@@ -48,13 +48,9 @@ class StackingOptions:
     min_grasp_height: float = 0.04    # the fingertips stay above the table at min_pitch
     grasp_height_step: float = 0.01
     carry_step: float = 0.02          # m between the carry heights tried
-    # The open fingers as clearance.py models them: their tips hang at most 0.023 m + the
-    # finger's half width below the tool frame. The URDF's open fingers (0.30 rad) reach 0.058 m
-    # to the side, not 0.04: an approach that passes a can that closely can push it (docs/KATANA.md,
-    # "Cause found"). A uniform 0.06 m refuses needed plans (ahead they reach only 0.019 m); the
-    # fingers as points where the URDF puts them (branch fingers-radius) change the tutorial's tower.
-    fingers_drop: float = 0.03
-    fingers_radius: float = 0.04
+    # m between a free spot's can and any other can (free_spots.py): the open fingers round the
+    # can they grasp reach 0.058 m from its axis (clearance.OpenFingers).
+    spot_gap: float = 0.08
 
 
 @dataclass(frozen=True)

@@ -16,7 +16,7 @@ from typing import Callable, List, Sequence, Tuple
 
 from katana_pick.arm_geometry import KatanaGeometry
 from katana_pick.stacking import StackingOptions, choose_tower, pick_order
-from katana_pick.trajectories import PlanError, TimingOptions, plan_can
+from katana_pick.trajectories import PlanError, TimingOptions, plan_can_from_here
 
 # Above this many cans only the tutorial's order is scored for each tower: 8 cans would be 40320
 # orders a tower.
@@ -72,16 +72,18 @@ def fits_by_plan(geometry: KatanaGeometry, q_start: Sequence[float], cans: Seque
                  also_standing: Sequence[Tuple[float, float]] = (), options: StackingOptions = StackingOptions(),
                  timing: TimingOptions = TimingOptions(),
                  free: Sequence[Tuple[float, float]] = ()) -> Callable[[int, int, int], bool]:
-    """choose_stack's fits, remembered: whether plan_can finds a plan from q_start for cans[i] onto
-    a tower `level` high at (cans + free)[tower], past every other can counted as standing (those
-    of cans and also_standing, cans the arm does not reach)."""
+    """choose_stack's fits, remembered: whether plan_can_from_here finds a plan from q_start for
+    cans[i] onto a tower `level` high at (cans + free)[tower], past every other can counted as
+    standing (those of cans and also_standing, cans the arm does not reach). From here, as
+    stack_cans plans each can, not plan_can: a tower two cans high may stand where the arm is at
+    q_start (stretched out, its wrist 0.2 m up), and only a first move away from it leaves it."""
     towers = list(cans) + list(free)
 
     @functools.lru_cache(maxsize=None)
     def fits(i, tower, level):
         standing = [c for k, c in enumerate(cans) if k not in (i, tower)] + list(also_standing)
         try:
-            plan_can(geometry, q_start, cans[i], towers[tower], level, options, timing=timing, standing=standing)
+            plan_can_from_here(geometry, q_start, cans[i], towers[tower], level, options, timing, standing)
             return True
         except PlanError:
             return False

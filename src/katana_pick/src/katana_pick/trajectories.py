@@ -13,7 +13,7 @@ from typing import List, Optional, Sequence, Tuple
 
 from katana_pick import katana_ik
 from katana_pick.arm_geometry import KatanaGeometry
-from katana_pick.clearance import Held, path_conflict, tower_and_cans
+from katana_pick.clearance import Held, OpenFingers, path_conflict, tower_and_cans
 from katana_pick.stacking import (Move, StackingOptions, Step, ToolPose, can_steps, carry_height, grasp_heights_all,
                                   heights_down, interpolate, pitches)
 
@@ -28,7 +28,14 @@ class TimingOptions:
 
 
 class PlanError(ValueError):
-    """A move the arm cannot make; the message names the move and why."""
+    """A move the arm cannot make; the message names the move and why. approach_blocked: whether
+    some grasp was refused only because the open fingers' way from the arm's joints to its
+    approach point passed too close to a can or the tower, the one refusal that a first move
+    elsewhere can lift (plan_can_from_here)."""
+
+    def __init__(self, message, approach_blocked=False):
+        super().__init__(message)
+        self.approach_blocked = approach_blocked
 
 
 @dataclass(frozen=True)
@@ -113,7 +120,7 @@ def plan_can(geometry: KatanaGeometry, q_start: Sequence[float], can, tower, lev
     against the tower and the cans in `standing`, those on the table besides this one and the
     tower's."""
     obstacles = tower_and_cans(tower, level, standing, options.can_height, options.can_radius)
-    why_not = None
+    why_not, blocked = None, False
     for whole_reach in (False, True):
         for height in grasp_heights_all(options) if whole_reach else options.grasp_heights:
             feasible = []
@@ -128,12 +135,14 @@ def plan_can(geometry: KatanaGeometry, q_start: Sequence[float], can, tower, lev
                         _check_clear(geometry, q_start, steps, paths, height, obstacles, options)
                         feasible.append((steps, paths))
                 except PlanError as e:
+                    blocked = blocked or e.approach_blocked
                     if why_not is None or pitch == 0.0 and height == options.grasp_heights[0] and not whole_reach:
                         why_not = 'grasped %.2f m up with the gripper level: %s' % (height, e)
             if feasible:
                 return feasible[len(feasible) // 2]
     raise PlanError('no grasp %.2f-%.2f m up with a pitch in [%.2f, %.2f] rad reaches it (%s)' % (
-        options.min_grasp_height, max(options.grasp_heights), options.min_pitch, options.max_pitch, why_not))
+        options.min_grasp_height, max(options.grasp_heights), options.min_pitch, options.max_pitch, why_not),
+        approach_blocked=blocked)
 
 
 def plan_can_from_here(geometry: KatanaGeometry, q_now: Sequence[float], can, tower, level: int,
@@ -154,11 +163,13 @@ def plan_can_from_here(geometry: KatanaGeometry, q_now: Sequence[float], can, to
         return plan_can(geometry, q_now, can, tower, level, options, timing=timing, standing=standing)
     except PlanError as from_here:
         failure = from_here
+    if not failure.approach_blocked:  # no first move makes a can reachable that is not
+        raise failure
     here = tool_pose(geometry, q_now)
     back = max(0.0, here.radius - options.approach_distance) / max(here.radius, 1e-9)
     up = here.z + options.retreat_distance
     obstacles = tower_and_cans(tower, level, standing, options.can_height, options.can_radius)
-    fingers = Held(options.fingers_drop, options.fingers_radius)
+    fingers = OpenFingers(options.open_position)
     straight = [Move('up, clear of the tower', (ToolPose(here.x, here.y, up, here.pitch),)),
                 Move('back, clear of the tower', (ToolPose(here.x * back, here.y * back, here.z, here.pitch),)),
                 Move('back and up, clear of the tower', (ToolPose(here.x * back, here.y * back, up, here.pitch),))]
@@ -203,7 +214,7 @@ def way_home(geometry: KatanaGeometry, q_now: Sequence[float], home: Sequence[fl
     them. The straight rise is not checked: it lifts the fingers off whatever they are at. Near the
     base the elbow's limit stops that rise, and a joint move home from beside a can can sweep the
     fingers through it."""
-    fingers = Held(options.fingers_drop, options.fingers_radius)
+    fingers = OpenFingers(options.open_position)
     for first in (False, True):
         before = []
         if first:
@@ -245,13 +256,14 @@ def _check_clear(geometry, q_start, steps, paths, height, obstacles, options):
     """PlanError unless the moves through the air of can_steps' plan clear the obstacles: the
     approach with the fingers open, the carry with the can held (clearance.py). High over
     everything as they go, the joint-space path may still bulge: from just behind the tower, the
-    fingers may sweep over it before they rise."""
+    fingers may sweep over it before they rise. The carry first: a blocked approach is
+    approach_blocked only when the rest would do."""
     moves = [s for s in steps if isinstance(s, Move)]
-    for index, held in ((0, Held(options.fingers_drop, options.fingers_radius)), (3, Held(height, options.can_radius))):
+    for index, held in ((3, Held(height, options.can_radius)), (0, OpenFingers(options.open_position))):
         start = tuple(q_start) if index == 0 else paths[index - 1].positions[-1]
         conflict = path_conflict(geometry, (start,) + paths[index].positions, held, obstacles)
         if conflict is not None:
-            raise PlanError('%s: %s' % (moves[index].what, conflict))
+            raise PlanError('%s: %s' % (moves[index].what, conflict), approach_blocked=index == 0)
 
 
 def _plan_lower(geometry, q_start, can, tower, level, height, pitch, obstacles, options, roll, timing):
@@ -265,7 +277,7 @@ def _plan_lower(geometry, q_start, can, tower, level, height, pitch, obstacles, 
 
     def first_clear(variants, q, held, index):
         """The first (heights, steps) whose move `index` is reachable from q and clears the
-        obstacles, with that move's path."""
+        obstacles (held None: reachable), with that move's path."""
         why = None
         for heights, steps in variants:
             move = moves(steps)[index]
@@ -274,25 +286,34 @@ def _plan_lower(geometry, q_start, can, tower, level, height, pitch, obstacles, 
             except PlanError as e:
                 why = why or e
                 continue
-            conflict = path_conflict(geometry, (tuple(q),) + path.positions, held, obstacles)
+            conflict = None if held is None else path_conflict(geometry, (tuple(q),) + path.positions, held, obstacles)
             if conflict is None:
                 return heights, steps, path
-            why = PlanError('%s: %s' % (move.what, conflict))
+            why = PlanError('%s: %s' % (move.what, conflict), approach_blocked=index == 0)
         raise why
 
-    approach_height, steps, approach = first_clear(
-        ((h, can_steps(can, tower, level, height, pitch, o, approach_height=h))
-         for h in heights_down(high, height, o.carry_step)),
-        q_start, Held(o.fingers_drop, o.fingers_radius), 0)
-    taken = plan_moves(geometry, approach.positions[-1], moves(steps)[1:3], roll, timing)
-    over_tower = level * o.can_height + o.place_gap + height + o.lift
-    _, steps, carry = first_clear(
-        ((None, can_steps(can, tower, level, height, pitch, o, approach_height, (above_can, above_tower)))
-         for above_tower in heights_down(high, over_tower, o.carry_step)
-         for above_can in heights_down(high, height + o.lift, o.carry_step)),
-        taken[-1].positions[-1], Held(height, o.can_radius), 3)
-    rest = plan_moves(geometry, carry.positions[-1], moves(steps)[4:], roll, timing)
-    return steps, [approach] + taken + [carry] + rest
+    def after_approach(approach_height, steps, approach):
+        taken = plan_moves(geometry, approach.positions[-1], moves(steps)[1:3], roll, timing)
+        over_tower = level * o.can_height + o.place_gap + height + o.lift
+        _, steps, carry = first_clear(
+            ((None, can_steps(can, tower, level, height, pitch, o, approach_height, (above_can, above_tower)))
+             for above_tower in heights_down(high, over_tower, o.carry_step)
+             for above_can in heights_down(high, height + o.lift, o.carry_step)),
+            taken[-1].positions[-1], Held(height, o.can_radius), 3)
+        rest = plan_moves(geometry, carry.positions[-1], moves(steps)[4:], roll, timing)
+        return steps, [approach] + taken + [carry] + rest
+
+    approaches = [(h, can_steps(can, tower, level, height, pitch, o, approach_height=h))
+                  for h in heights_down(high, height, o.carry_step)]
+    try:
+        return after_approach(*first_clear(approaches, q_start, OpenFingers(o.open_position), 0))
+    except PlanError as blocked:
+        if not blocked.approach_blocked:
+            raise
+        # Only the way to the approach point is blocked: a first move elsewhere lifts that only if
+        # the rest would do (a PlanError from here if not).
+        after_approach(*first_clear(approaches, q_start, None, 0))
+        raise
 
 
 def back_off(geometry: KatanaGeometry, q_now: Sequence[float], q_home: Sequence[float],

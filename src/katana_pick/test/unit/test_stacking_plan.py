@@ -12,7 +12,7 @@ from katana_pick import katana_ik  # noqa: E402
 from katana_pick.arm_geometry import KatanaGeometry, within_limits  # noqa: E402
 from katana_pick.stacking import (Grip, Move, StackingOptions, ToolPose, can_steps, carry_height,  # noqa: E402
                                   choose_tower, interpolate, pick_order, pitches)
-from katana_pick.clearance import Held, Obstacle, path_conflict, tower_and_cans  # noqa: E402
+from katana_pick.clearance import Obstacle, OpenFingers, path_conflict, tower_and_cans  # noqa: E402
 from katana_pick.trajectories import (PlanError, TimingOptions, back_off, landed, plan_can,  # noqa: E402
                                       plan_can_from_here, tool_pose, way_home)
 
@@ -231,7 +231,7 @@ def test_a_can_lowered_onto_the_tower_is_down_where_the_tool_stands_near_the_pla
 
 
 def test_the_way_home_after_a_failure_keeps_the_open_fingers_off_the_cans():
-    fingers = Held(O.fingers_drop, O.fingers_radius)
+    fingers = OpenFingers(O.open_position)
     # The first can set on the table at a free spot near the base: the rise stops below its top.
     spot = (0.36, 0.1)
     steps, paths = plan_can(G, START, (0.40, 0.2), spot, 0)

@@ -12,7 +12,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..'
 from katana_arm_gazebo.can_layouts import LayoutRules, random_layout  # noqa: E402
 from katana_pick import katana_ik, reach  # noqa: E402
 from katana_pick.arm_geometry import KatanaGeometry, within_limits  # noqa: E402
-from katana_pick.clearance import Held, Obstacle, path_conflict, tower_and_cans  # noqa: E402
+from katana_pick.clearance import Held, Obstacle, OpenFingers, path_conflict, tower_and_cans  # noqa: E402
 from katana_pick.stacking import Move, StackingOptions, choose_tower, pick_order  # noqa: E402
 from katana_pick.free_spots import BESIDE, free_spots  # noqa: E402
 from katana_pick.tower_choice import choose_stack, fits_by_plan, in_tower, placed  # noqa: E402
@@ -140,7 +140,7 @@ def test_four_far_cans_go_four_high_on_a_free_spot_nearer_the_base():
     spots = free_spots(cans, G)
     assert spots
     for s in spots:
-        assert all(math.dist(s, c) >= 2 * (O.can_radius + O.fingers_radius) for c in cans)
+        assert all(math.dist(s, c) >= 2 * O.can_radius + O.spot_gap for c in cans)
         assert 0.28 < math.hypot(*s) < min(ranges)
         bearing = math.atan2(s[1], s[0])
         assert min(math.atan2(y, x) for x, y in cans) - BESIDE - 1e-9 <= bearing
@@ -171,7 +171,7 @@ def _free_moves_clear(q_start, steps, paths, tower, level, standing):
     grasp_height = next(m.poses[-1].z for m in moves if m.what == 'in along the line from the base')
     for move, path in zip(moves, paths):
         if not move.line:
-            held = Held(grasp_height, O.can_radius) if move.holding else Held(O.fingers_drop, O.fingers_radius)
+            held = Held(grasp_height, O.can_radius) if move.holding else OpenFingers(O.open_position)
             assert path_conflict(G, (q,) + path.positions, held, obstacles) is None, move.what
         q = path.positions[-1]
 
@@ -215,3 +215,28 @@ def test_the_tutorial_searchs_moves_through_the_air_clear_the_tower_and_the_cans
             steps, paths = plan_can_from_here(G, q, cans[i], tower, level, O, standing=left, home=START)
             _free_moves_clear(q, steps, paths, tower, level, left)
             q, level, on = paths[-1].positions[-1], level + 1, on + [i]
+
+
+def test_the_tutorials_cans_go_on_the_middle_can_though_the_arm_starts_where_its_tower_stands():
+    """The tutorial's three cans: the second goes two cans high on the middle can (0.38, 0). The
+    arm stretched out along x (the spawn pose) has its gripper 0.2 m up at 0.33-0.50 m, in that
+    tower's 0.24 m: no plan sets out from there, only one after a first move away (which
+    stack_cans plans from where the arm really is, behind the tower). tower_choice scores it so."""
+    cans = [(0.31, -0.18), (0.38, 0.0), (0.31, 0.18)]
+    with pytest.raises(PlanError) as refused:
+        plan_can(G, START, cans[0], cans[1], 2, standing=[cans[2]])
+    assert refused.value.approach_blocked
+    steps, _ = plan_can_from_here(G, START, cans[0], cans[1], 2, standing=[cans[2]])
+    assert steps[0].what == 'back and up, clear of the tower'
+    assert choose_stack(cans, fits_by_plan(G, START, cans)) == (1, [0, 2])
+
+
+def test_a_can_out_of_reach_is_refused_without_first_moves():
+    """Past the arm's reach no approach is ever tried: the refusal is not approach_blocked, and
+    plan_can_from_here gives plan_can's reason at once."""
+    with pytest.raises(PlanError) as refused:
+        plan_can(G, START, (0.60, 0.0), (0.38, 0.0), 1)
+    assert not refused.value.approach_blocked
+    with pytest.raises(PlanError) as from_here:
+        plan_can_from_here(G, START, (0.60, 0.0), (0.38, 0.0), 1)
+    assert str(from_here.value) == str(refused.value)
