@@ -50,9 +50,6 @@ class Held:
         x, y, z = _tool_positions(geometry, qs)
         return x[:, None], y[:, None], (z - self.drop)[:, None], np.full((len(qs), 1), self.radius)
 
-    def parts(self, geometry: KatanaGeometry, q: Sequence[float]) -> Tuple[Part, ...]:
-        return _parts_at(self, geometry, q)
-
 
 @dataclass(frozen=True)
 class OpenFingers:
